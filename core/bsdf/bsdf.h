@@ -1,0 +1,64 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "core/math/color.h"
+#include "core/math/frame.h"
+#include "core/registry/plugin.h"
+
+namespace caustica {
+
+// Radiance flows from lights to the camera; importance from the camera to
+// lights (light tracing, photons). Refraction and shading normals are not
+// symmetric between the two.
+enum class TransportMode { Radiance, Importance };
+
+// Lobe flags, combined with |.
+enum BsdfLobe : uint32_t {
+  kDiffuseReflection = 1u << 0,
+  kDiffuseTransmission = 1u << 1,
+  kGlossyReflection = 1u << 2,
+  kGlossyTransmission = 1u << 3,
+  kDeltaReflection = 1u << 4,
+  kDeltaTransmission = 1u << 5,
+
+  kDiffuse = kDiffuseReflection | kDiffuseTransmission,
+  kGlossy = kGlossyReflection | kGlossyTransmission,
+  kDelta = kDeltaReflection | kDeltaTransmission,
+  kReflection = kDiffuseReflection | kGlossyReflection | kDeltaReflection,
+  kTransmission = kDiffuseTransmission | kGlossyTransmission | kDeltaTransmission,
+};
+
+struct BsdfContext {
+  TransportMode mode = TransportMode::Radiance;
+  Vec2 uv;
+};
+
+// A sampled direction. For a delta lobe f and pdf are the discrete lobe's
+// weight and probability (eval and pdf of that direction are zero).
+struct BsdfSample {
+  Vec3 wi;
+  Color f;
+  float pdf = 0;
+  uint32_t lobe = 0;
+  float eta = 1;  // relative IOR along wi for transmission, 1 otherwise
+
+  bool is_delta() const { return (lobe & kDelta) != 0; }
+  bool is_transmission() const { return (lobe & kTransmission) != 0; }
+};
+
+// A scattering function in its local shading frame (normal = +z). wo and wi
+// both point away from the surface.
+class Bsdf : public Plugin {
+ public:
+  virtual uint32_t lobes() const = 0;
+  virtual Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const = 0;
+  virtual float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const = 0;
+  // u_lobe chooses among lobes, u the direction within one.
+  virtual std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const = 0;
+  // Directional-hemispherical reflectance seen from wo, as written to the albedo AOV.
+  virtual Color albedo(const BsdfContext& ctx, Vec3 wo) const = 0;
+};
+
+}  // namespace caustica

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <optional>
+
+#include "core/bsdf/bsdf.h"
+#include "core/geometry/interaction.h"
+
+namespace caustica {
+
+// A BSDF placed on a surface point: converts between world and shading
+// frames and, once for every material, rejects directions in the tangent
+// plane, zero pdfs, and paths whose geometric and shading sides disagree
+// (light leaks); in importance mode it applies the adjoint shading-normal
+// correction (Veach 1997, section 5.3).
+class SurfaceBsdf {
+ public:
+  SurfaceBsdf(const Bsdf& bsdf, const SurfaceInteraction& si, TransportMode mode)
+      : bsdf_(&bsdf), frame_(si.shading), ng_(si.ng), ctx_{mode, si.uv} {}
+
+  Color eval(Vec3 wo_world, Vec3 wi_world) const;
+  float pdf(Vec3 wo_world, Vec3 wi_world) const;
+  // The sample's wi is in world space.
+  std::optional<BsdfSample> sample(Vec3 wo_world, float u_lobe, Vec2 u) const;
+  Color albedo(Vec3 wo_world) const { return bsdf_->albedo(ctx_, frame_.to_local(wo_world)); }
+  uint32_t lobes() const { return bsdf_->lobes(); }
+
+ private:
+  float shading_correction(Vec3 wo_world, Vec3 wi_world) const;
+
+  const Bsdf* bsdf_;
+  Frame frame_;
+  Vec3 ng_;
+  BsdfContext ctx_;
+};
+
+}  // namespace caustica

@@ -1,0 +1,133 @@
+// perspective: a pinhole camera.
+//
+// Parameters
+//   fov             float      39.6        field of view in degrees, along fov_axis (50 mm lens)
+//   fov_axis        string     x           x, y, diagonal, smaller or larger
+//   near_clip       float      0.01        distance of the near plane
+//   far_clip        float      10000       distance of the far plane
+//   focus_distance  float      0           accepted for compatibility; a pinhole is always in focus
+//   to_world        transform  identity    camera looks along local +z, +y up, +x left
+//   (nested film and sampler; hdrfilm and independent when absent)
+//
+//   <sensor type="perspective">
+//       <float name="fov" value="39.3"/>
+//       <transform name="to_world"><lookat origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
+//   </sensor>
+
+#include <cmath>
+
+#include "core/camera/sensor.h"
+#include "core/math/constants.h"
+#include "core/math/transform.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+template <class T>
+std::shared_ptr<T> child_or_default(const Properties& props, const char* category, const char* name) {
+  if (auto c = props.child<T>(category)) return c;
+  const PluginInfo* info = Registry::instance().find(category, name);
+  return std::dynamic_pointer_cast<T>(info->create(Properties(*info, props.where())));
+}
+
+class PerspectiveSensor final : public Sensor {
+ public:
+  explicit PerspectiveSensor(const Properties& props)
+      : to_world_(props.get_transform("to_world")),
+        near_(props.get_float("near_clip")),
+        far_(props.get_float("far_clip")) {
+    set_film_and_sampler(child_or_default<Film>(props, "film", "hdrfilm"),
+                         child_or_default<Sampler>(props, "sampler", "independent"));
+    props.get_float("focus_distance");
+    const float fov = props.get_float("fov");
+    if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
+    if (!(near_ > 0 && far_ > near_)) throw props.error("far_clip", "need 0 < near_clip < far_clip");
+    const float w = float(film()->width()), h = float(film()->height());
+    const std::string axis = props.get_string("fov_axis");
+    const float t = std::tan(fov * kPi / 360);
+    if (axis == "x" || (axis == "smaller" && w <= h) || (axis == "larger" && w > h)) {
+      tan_x_ = t;
+      tan_y_ = t * h / w;
+    } else if (axis == "y" || axis == "smaller" || axis == "larger") {
+      tan_y_ = t;
+      tan_x_ = t * w / h;
+    } else if (axis == "diagonal") {
+      const float d = std::sqrt(w * w + h * h);
+      tan_x_ = t * w / d;
+      tan_y_ = t * h / d;
+    } else {
+      throw props.error("fov_axis", "must be x, y, diagonal, smaller or larger, not '" + axis + "'");
+    }
+    origin_ = to_world_.point({0, 0, 0});
+    forward_ = normalize(to_world_.vector({0, 0, 1}));
+    image_plane_area_ = 4 * tan_x_ * tan_y_;
+  }
+
+  Ray generate_ray(Vec2 raster, Vec2) const override {
+    const Vec3 local{-(2 * raster.x / film()->width() - 1) * tan_x_, -(2 * raster.y / film()->height() - 1) * tan_y_,
+                     1};
+    const Vec3 d_local = normalize(local);
+    const Vec3 d = normalize(to_world_.vector(d_local));
+    const float near_t = near_ / d_local.z;
+    return {origin_ + d * near_t, d, (far_ - near_) / d_local.z};
+  }
+
+  Color We(const Ray& ray, Vec2* raster) const override {
+    const float cos_theta = dot(ray.d, forward_);
+    if (cos_theta <= 0 || !to_raster(ray.d, raster)) return {};
+    const float cos2 = cos_theta * cos_theta;
+    return Color(1 / (image_plane_area_ * cos2 * cos2));
+  }
+
+  void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const override {
+    const float cos_theta = dot(ray.d, forward_);
+    Vec2 raster;
+    *pdf_pos = 0;
+    *pdf_dir = 0;
+    if (cos_theta <= 0 || !to_raster(ray.d, &raster)) return;
+    *pdf_pos = 1;
+    *pdf_dir = 1 / (image_plane_area_ * cos_theta * cos_theta * cos_theta);
+  }
+
+  std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2) const override {
+    Vec3 wi = origin_ - ref.p;
+    const float dist2 = squared_length(wi);
+    if (dist2 == 0) return std::nullopt;
+    wi = wi / std::sqrt(dist2);
+    Vec2 raster;
+    const Color importance = We({origin_, -wi, kInfinity}, &raster);
+    if (importance.is_black()) return std::nullopt;
+    const float cos_lens = dot(-wi, forward_);
+    return WiSample{wi, importance, dist2 / cos_lens, origin_, raster};
+  }
+
+ private:
+  bool to_raster(Vec3 d_world, Vec2* raster) const {
+    const Vec3 local = to_world_.inverse().vector(d_world);
+    if (local.z <= 0) return false;
+    const float x = local.x / local.z, y = local.y / local.z;
+    raster->x = (1 - x / tan_x_) * 0.5f * film()->width();
+    raster->y = (1 - y / tan_y_) * 0.5f * film()->height();
+    return raster->x >= 0 && raster->x < film()->width() && raster->y >= 0 && raster->y < film()->height();
+  }
+
+  Transform to_world_;
+  float near_, far_;
+  float tan_x_ = 1, tan_y_ = 1;
+  Vec3 origin_, forward_;
+  float image_plane_area_ = 4;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(PerspectiveSensor, "sensor", "perspective",
+                         {{"fov", ParamType::Float, "39.597755", "field of view in degrees (a 50 mm lens on 35 mm film)"},
+                          {"fov_axis", ParamType::String, "x", "axis the fov applies to"},
+                          {"near_clip", ParamType::Float, "0.01", "near plane distance"},
+                          {"far_clip", ParamType::Float, "10000", "far plane distance"},
+                          {"focus_distance", ParamType::Float, "0", "ignored by a pinhole"},
+                          {"to_world", ParamType::Transform, "", "camera placement"}},
+                         {"film", "sampler"});
+
+}  // namespace caustica

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "core/film/film.h"
+#include "core/geometry/ray.h"
+#include "core/lights/emitter.h"
+#include "core/math/color.h"
+#include "core/registry/plugin.h"
+#include "core/sampling/sampler.h"
+
+namespace caustica {
+
+// Importance arriving at a reference point from the camera, for connecting
+// light paths to the lens.
+struct WiSample {
+  Vec3 wi;        // unit direction from the reference point to the lens
+  Color We;       // importance carried along -wi
+  float pdf = 0;  // solid angle density at the reference point
+  Vec3 p_lens;
+  Vec2 raster;    // where the connection lands on the film, in pixels
+};
+
+// A camera. Raster coordinates run over [0, width] x [0, height] in pixels,
+// y downward; the importance We is normalised so that one sample per pixel
+// of a light path splatted at its raster position estimates the pixel.
+class Sensor : public Plugin {
+ public:
+  virtual Ray generate_ray(Vec2 raster, Vec2 u_lens) const = 0;
+  // Importance emitted along `ray` (which starts on the lens) and its raster position.
+  virtual Color We(const Ray& ray, Vec2* raster) const = 0;
+  virtual void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const = 0;
+  virtual std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2 u) const = 0;
+
+  const std::shared_ptr<Film>& film() const { return film_; }
+  const std::shared_ptr<Sampler>& sampler() const { return sampler_; }
+
+ protected:
+  void set_film_and_sampler(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler) {
+    film_ = std::move(film);
+    sampler_ = std::move(sampler);
+  }
+
+ private:
+  std::shared_ptr<Film> film_;
+  std::shared_ptr<Sampler> sampler_;
+};
+
+}  // namespace caustica

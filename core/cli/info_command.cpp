@@ -1,0 +1,46 @@
+#include "core/cli/info_command.h"
+
+#include <cstdio>
+#include <map>
+
+#include "core/bsdf/bsdf.h"
+#include "core/cli/render_command.h"
+#include "core/scene/scene_loader.h"
+
+namespace caustica {
+
+void InfoCommand::add_to(CLI::App& app) {
+  command_ = app.add_subcommand("info", "print what the scene holds");
+  command_->add_option("scene", scene_, "Mitsuba 3 scene file")->required()->check(CLI::ExistingFile);
+  command_->add_option("-D", defines_, "define a scene parameter: -D name=value");
+}
+
+int InfoCommand::run() const {
+  const auto scene = load_scene(scene_, parse_defines(defines_));
+  std::map<std::string, int> shape_kinds;
+  uint32_t lobes = 0;
+  for (const auto& s : scene->shapes()) {
+    ++shape_kinds[s->kind()];
+    lobes |= s->bsdf()->lobes();
+  }
+  std::printf("scene: %s\n", scene_.c_str());
+  std::printf("film: %dx%d\n", scene->sensor().film()->width(), scene->sensor().film()->height());
+  std::printf("integrator: %s\n", scene->integrator()->describe().c_str());
+  std::printf("shapes: %zu", scene->shapes().size());
+  for (const auto& [kind, n] : shape_kinds) std::printf(" (%s: %d)", kind.c_str(), n);
+  int area = 0, delta = 0, infinite = 0;
+  for (const auto& e : scene->emitters()) {
+    area += e->is_area();
+    delta += e->is_delta();
+    infinite += e->is_infinite();
+  }
+  std::printf("\nemitters: %zu (area: %d, delta: %d, environment: %d)\n", scene->emitters().size(), area, delta,
+              infinite);
+  std::printf("bsdf lobes: %s%s%s\n", lobes & kDiffuse ? "diffuse " : "", lobes & kGlossy ? "glossy " : "",
+              lobes & kDelta ? "delta" : "");
+  const Bounds3& b = scene->bounds();
+  std::printf("bounds: (%g, %g, %g) - (%g, %g, %g)\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  return 0;
+}
+
+}  // namespace caustica

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace caustica {
+
+// `caustica render SCENE [-o OUT.exr] [--spp N | --time S] ...`
+class RenderCommand {
+ public:
+  void add_to(CLI::App& app);
+  bool chosen() const { return command_ && command_->parsed(); }
+  int run() const;
+
+ private:
+  CLI::App* command_ = nullptr;
+  std::string scene_, output_, integrator_, debug_pixel_;
+  std::vector<std::string> defines_;
+  uint32_t spp_ = 0;
+  double time_ = 0;
+  int threads_ = 0;
+  uint64_t seed_ = 0, debug_sample_ = 0;
+  bool quiet_ = false;
+  std::string display_, view_, ocio_config_;
+};
+
+// Parses "-D name=value" items into a map; throws on a missing '='.
+std::map<std::string, std::string> parse_defines(const std::vector<std::string>& items);
+
+}  // namespace caustica

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/math/vec.h"
+
+namespace caustica {
+
+// Where a sample that was dropped came from, so it can be replayed.
+struct SampleId {
+  Vec2i pixel;
+  uint64_t index = 0;
+};
+
+// Per-pixel accumulation of filter-weighted samples over named channels, with
+// the moments of the first three (the beauty) for variance estimates. This is
+// the one place samples enter an image: NaN and Inf are dropped and counted
+// here, never averaged in.
+class FilmBuffer {
+ public:
+  FilmBuffer(int width, int height, std::vector<std::string> channels);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const std::vector<std::string>& channels() const { return channels_; }
+  size_t channel_count() const { return channels_.size(); }
+
+  // Safe to call concurrently for different pixels.
+  void add_sample(SampleId id, std::span<const float> values, float weight);
+
+  // The weighted mean of each channel, pixel-interleaved.
+  std::vector<float> resolve() const;
+  // Per-pixel sample variance of the weighted mean's beauty channels
+  // (Welford over the samples), pixel-interleaved, three per pixel.
+  std::vector<float> variance() const;
+  uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
+
+  uint64_t dropped_samples() const { return dropped_.load(); }
+  // The first dropped sample (lowest pixel, then index), if any.
+  SampleId first_dropped() const;
+
+ private:
+  size_t index(Vec2i p) const { return size_t(p.y) * width_ + p.x; }
+
+  int width_, height_;
+  std::vector<std::string> channels_;
+  std::vector<double> weighted_sum_;  // channels per pixel
+  std::vector<double> weight_sum_;
+  std::vector<double> mean_, m2_;  // Welford state, three per pixel
+  std::vector<uint32_t> count_;
+  std::atomic<uint64_t> dropped_{0};
+  mutable std::mutex dropped_mutex_;
+  SampleId first_dropped_{{-1, -1}, 0};
+};
+
+}  // namespace caustica

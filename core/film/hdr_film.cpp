@@ -1,0 +1,59 @@
+// hdrfilm: a linear, high-dynamic-range film written as OpenEXR.
+//
+// Parameters
+//   width             integer  768      pixels
+//   height            integer  576      pixels
+//   pixel_format      string   rgb      rgb or rgba (alpha is written as 1)
+//   component_format  string   float16  float16 or float32
+//   (nested rfilter: box, tent or gaussian; gaussian when absent)
+//
+//   <film type="hdrfilm">
+//       <integer name="width" value="512"/>
+//       <integer name="height" value="512"/>
+//       <rfilter type="tent"/>
+//   </film>
+
+#include "core/film/film.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+std::shared_ptr<ReconstructionFilter> filter_or_default(const Properties& props) {
+  if (auto f = props.child<ReconstructionFilter>("rfilter")) return f;
+  const PluginInfo* gaussian = Registry::instance().find("rfilter", "gaussian");
+  return std::dynamic_pointer_cast<ReconstructionFilter>(gaussian->create(Properties(*gaussian, props.where())));
+}
+
+int positive(const Properties& props, const char* name) {
+  const int64_t v = props.get_int(name);
+  if (v <= 0 || v > 1 << 16) throw props.error(name, "must be between 1 and 65536");
+  return int(v);
+}
+
+class HdrFilm final : public Film {
+ public:
+  explicit HdrFilm(const Properties& props)
+      : Film(positive(props, "width"), positive(props, "height"), filter_or_default(props), half(props)) {
+    const std::string format = props.get_string("pixel_format");
+    if (format != "rgb" && format != "rgba") throw props.error("pixel_format", "must be rgb or rgba");
+  }
+
+ private:
+  static bool half(const Properties& props) {
+    const std::string f = props.get_string("component_format");
+    if (f != "float16" && f != "float32") throw props.error("component_format", "must be float16 or float32");
+    return f == "float16";
+  }
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(HdrFilm, "film", "hdrfilm",
+                         {{"width", ParamType::Integer, "768", "width in pixels"},
+                          {"height", ParamType::Integer, "576", "height in pixels"},
+                          {"pixel_format", ParamType::String, "rgb", "rgb or rgba"},
+                          {"component_format", ParamType::String, "float16", "float16 or float32"}},
+                         {"rfilter"});
+
+}  // namespace caustica

@@ -1,0 +1,70 @@
+#include "core/geometry/embree_scene.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace caustica {
+
+namespace {
+
+RTCRay to_rtc(const Ray& ray) {
+  RTCRay r{};
+  r.org_x = ray.o.x;
+  r.org_y = ray.o.y;
+  r.org_z = ray.o.z;
+  r.dir_x = ray.d.x;
+  r.dir_y = ray.d.y;
+  r.dir_z = ray.d.z;
+  r.tnear = 0;
+  r.tfar = ray.t_max;
+  r.mask = ~0u;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes) {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw std::runtime_error("cannot create an Embree device (error " +
+                                         std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+  scene_ = rtcNewScene(device_);
+  // Robust mode makes the triangle test watertight and conservative, which
+  // the floating-point error bounds of the hit points rely on.
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  for (const auto& shape : shapes) {
+    const unsigned id = shape->attach(device_, scene_);
+    if (id >= by_geom_id_.size()) by_geom_id_.resize(id + 1, nullptr);
+    by_geom_id_[id] = shape.get();
+  }
+  rtcCommitScene(scene_);
+}
+
+EmbreeScene::~EmbreeScene() {
+  rtcReleaseScene(scene_);
+  rtcReleaseDevice(device_);
+}
+
+std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayhit{};
+  rayhit.ray = to_rtc(ray);
+  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &rayhit);
+  if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  const RayHit hit{rayhit.ray.tfar, rayhit.hit.primID, {rayhit.hit.u, rayhit.hit.v}};
+  return by_geom_id_[rayhit.hit.geomID]->interaction(ray, hit);
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = to_rtc(ray);
+  rtcOccluded1(scene_, &context, &r);
+  return r.tfar < 0;
+}
+
+}  // namespace caustica

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/shapes/shape.h"
+
+namespace caustica {
+
+// Ray queries over the scene's shapes through Embree.
+class EmbreeScene {
+ public:
+  explicit EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
+  // Whether anything blocks the ray before t_max.
+  bool occluded(const Ray& ray) const;
+
+ private:
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::vector<const Shape*> by_geom_id_;
+};
+
+}  // namespace caustica

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "core/geometry/offset.h"
+#include "core/math/frame.h"
+#include "core/math/vec.h"
+
+namespace caustica {
+
+class Shape;
+
+// A point on a surface as the integrators see it.
+struct SurfaceInteraction {
+  Vec3 p;
+  Vec3 p_error;  // conservative bound on |p - exact hit point| per axis
+  Vec3 ng;       // geometric normal, unit length, on the shape's outward side
+  Frame shading;  // shading frame; shading.n lies on ng's side
+  Vec2 uv;
+  float t = kInfinity;
+  const Shape* shape = nullptr;
+
+  Ray spawn(Vec3 d) const { return {offset_ray_origin(p, p_error, ng, d), d, kInfinity}; }
+
+  // A segment toward `target` that stops just short of it, for visibility.
+  Ray spawn_to(Vec3 target, Vec3 target_error, Vec3 target_n) const {
+    const Vec3 o = offset_ray_origin(p, p_error, ng, target - p);
+    const Vec3 to = target_n == Vec3() ? target : offset_ray_origin(target, target_error, target_n, o - target);
+    const Vec3 d = to - o;
+    return {o, d, 1 - kShadowEpsilon};
+  }
+
+  static constexpr float kShadowEpsilon = 1e-4f;
+};
+
+}  // namespace caustica

@@ -1,0 +1,84 @@
+// area: makes the shape it is nested in emit, uniformly and diffusely, from
+// the side its normals point to.
+//
+// Parameters
+//   radiance  rgb  1  emitted radiance
+//
+//   <shape type="rectangle">
+//       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
+//   </shape>
+
+#include "core/lights/emitter.h"
+#include "core/math/constants.h"
+#include "core/registry/properties.h"
+#include "core/sampling/warp.h"
+#include "core/shapes/shape.h"
+
+namespace caustica {
+namespace {
+
+class AreaEmitter final : public Emitter {
+ public:
+  explicit AreaEmitter(const Properties& props) : radiance_(props.get_color("radiance")), where_(props.where()) {
+    if (radiance_.r < 0 || radiance_.g < 0 || radiance_.b < 0) throw props.error("radiance", "must not be negative");
+  }
+
+  void attach_shape(const Shape* shape) override {
+    if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");
+    shape_ = shape;
+  }
+
+  bool is_area() const override { return true; }
+
+  std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const override {
+    const PositionSample ps = shape_->sample_position(u);
+    if (ps.pdf <= 0) return std::nullopt;
+    Vec3 wi = ps.p - ref.p;
+    const float dist2 = squared_length(wi);
+    if (dist2 == 0) return std::nullopt;
+    wi = wi / std::sqrt(dist2);
+    const float cos_light = -dot(wi, ps.n);
+    if (cos_light <= 0) return std::nullopt;
+    return LiSample{wi, radiance_, ps.pdf * dist2 / cos_light, false, ps.p, ps.p_error, ps.n, false};
+  }
+
+  float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const override {
+    const float cos_light = -dot(wi, on_light.shading.n);
+    if (cos_light <= 0) return 0;
+    return squared_length(on_light.p - ref.p) / (cos_light * shape_->area());
+  }
+
+  Color L(const SurfaceInteraction& si, Vec3 w) const override {
+    return dot(w, si.shading.n) > 0 ? radiance_ : Color();
+  }
+
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
+    const PositionSample ps = shape_->sample_position(u_pos);
+    if (ps.pdf <= 0) return std::nullopt;
+    const Vec3 local = square_to_cosine_hemisphere(u_dir);
+    const float pdf_dir = cosine_hemisphere_pdf(local.z);
+    if (pdf_dir <= 0) return std::nullopt;
+    const Vec3 d = Frame::from_normal(ps.n).to_world(local);
+    return LeSample{{offset_ray_origin(ps.p, ps.p_error, ps.n, d), d, kInfinity}, ps.n, radiance_, ps.pdf, pdf_dir,
+                    false};
+  }
+
+  void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const override {
+    *pdf_pos = 1 / shape_->area();
+    *pdf_dir = cosine_hemisphere_pdf(dot(ray.d, n));
+  }
+
+  Color power() const override { return radiance_ * (kPi * shape_->area()); }
+
+ private:
+  Color radiance_;
+  SourceLocation where_;
+  const Shape* shape_ = nullptr;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}},
+                         {});
+
+}  // namespace caustica

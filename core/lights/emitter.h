@@ -1,0 +1,65 @@
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+
+#include "core/geometry/bounds.h"
+#include "core/geometry/interaction.h"
+#include "core/math/color.h"
+#include "core/registry/plugin.h"
+
+namespace caustica {
+
+class Shape;
+
+// The point that receives light, as emitters need to see it.
+struct ReferencePoint {
+  Vec3 p, p_error, n;  // n is zero for points not on a surface
+};
+
+// Incident light sampled toward a reference point.
+struct LiSample {
+  Vec3 wi;        // unit direction from the reference point to the light
+  Color Li;       // radiance arriving along -wi (intensity / d^2 for point lights)
+  float pdf = 0;  // solid angle density, or the discrete probability for delta lights
+  bool is_delta = false;
+  Vec3 p, p_error, n;  // the light's point; n zero for point lights and the environment
+  bool is_infinite = false;
+};
+
+// An emitted ray, for tracing light from the emitters.
+struct LeSample {
+  Ray ray;
+  Vec3 n;  // surface normal at the origin, zero if none
+  Color Le;
+  float pdf_pos = 0;  // area density (or 1 for a delta position)
+  float pdf_dir = 0;  // solid angle density of the direction
+  bool delta_position = false;
+};
+
+class Emitter : public Plugin {
+ public:
+  // Called once the scene's extent is known (the environment needs it).
+  virtual void prepare(const Bounds3&) {}
+  // Only area emitters can be nested in a shape; the others refuse.
+  virtual void attach_shape(const Shape*) { throw std::invalid_argument("only an area emitter can be nested in a shape"); }
+  virtual bool is_area() const { return false; }
+
+  virtual std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const = 0;
+  // The density sample_Li would have had for the direction wi reaching
+  // `on_light` (unused by the environment).
+  virtual float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const = 0;
+  // Radiance leaving a point of the emitter's surface in direction w.
+  virtual Color L(const SurfaceInteraction&, Vec3) const { return {}; }
+  // Radiance of an infinite emitter arriving along -d.
+  virtual Color Le_infinite(Vec3) const { return {}; }
+
+  virtual std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const = 0;
+  virtual void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const = 0;
+  virtual Color power() const = 0;
+
+  virtual bool is_delta() const { return false; }
+  virtual bool is_infinite() const { return false; }
+};
+
+}  // namespace caustica

@@ -1,0 +1,63 @@
+// point: an isotropic point light.
+//
+// Parameters
+//   intensity  rgb        1        radiant intensity (W/sr per channel)
+//   position   point      0, 0, 0  where it is (alternatively to_world)
+//   to_world   transform  identity the light sits at to_world applied to the origin
+//
+//   <emitter type="point">
+//       <point name="position" value="0, 1.9, 0"/>
+//       <rgb name="intensity" value="10"/>
+//   </emitter>
+
+#include "core/lights/emitter.h"
+#include "core/math/constants.h"
+#include "core/registry/properties.h"
+#include "core/sampling/warp.h"
+
+namespace caustica {
+namespace {
+
+class PointEmitter final : public Emitter {
+ public:
+  explicit PointEmitter(const Properties& props)
+      : intensity_(props.get_color("intensity")),
+        position_(props.get_transform("to_world").point(props.get_point("position"))) {}
+
+  std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
+    Vec3 wi = position_ - ref.p;
+    const float dist2 = squared_length(wi);
+    if (dist2 == 0) return std::nullopt;
+    wi = wi / std::sqrt(dist2);
+    return LiSample{wi, intensity_ / dist2, 1, true, position_, {}, {}, false};
+  }
+
+  float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
+
+  std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir) const override {
+    const Vec3 d = square_to_uniform_sphere(u_dir);
+    return LeSample{{position_, d, kInfinity}, {}, intensity_, 1, uniform_sphere_pdf(), true};
+  }
+
+  void pdf_Le(const Ray&, Vec3, float* pdf_pos, float* pdf_dir) const override {
+    *pdf_pos = 0;
+    *pdf_dir = uniform_sphere_pdf();
+  }
+
+  Color power() const override { return intensity_ * (4 * kPi); }
+  bool is_delta() const override { return true; }
+
+ private:
+  Color intensity_;
+  Vec3 position_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(PointEmitter, "emitter", "point",
+                         {{"intensity", ParamType::Color, "1", "radiant intensity"},
+                          {"position", ParamType::Point, "0, 0, 0", "position"},
+                          {"to_world", ParamType::Transform, "", "placement"}},
+                         {});
+
+}  // namespace caustica

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cmath>
+
+#include "core/math/vec.h"
+
+namespace caustica {
+
+// An orthonormal basis; local coordinates have the normal along +z.
+struct Frame {
+  Vec3 s{1, 0, 0}, t{0, 1, 0}, n{0, 0, 1};
+
+  Frame() = default;
+  Frame(Vec3 s_, Vec3 t_, Vec3 n_) : s(s_), t(t_), n(n_) {}
+
+  // Branchless basis construction (Duff et al., JCGT 2017): continuous
+  // everywhere except across n.z = 0's sign, and exact for unit n.
+  static Frame from_normal(Vec3 n) {
+    const float sign = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float b = n.x * n.y * a;
+    return {Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3(b, sign + n.y * n.y * a, -n.y), n};
+  }
+
+  Vec3 to_local(Vec3 v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
+  Vec3 to_world(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }
+};
+
+inline float cos_theta(Vec3 w) { return w.z; }
+inline float abs_cos_theta(Vec3 w) { return std::abs(w.z); }
+inline bool same_hemisphere(Vec3 a, Vec3 b) { return a.z * b.z > 0; }
+
+}  // namespace caustica

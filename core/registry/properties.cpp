@@ -1,0 +1,123 @@
+#include "core/registry/properties.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace caustica {
+
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out.empty() ? "none" : out;
+}
+
+std::string plugin_name(const PluginInfo& info) { return info.category + " '" + info.name + "'"; }
+
+}  // namespace
+
+void Properties::set(const std::string& name, PropertyValue value) {
+  const ParamSpec* spec = info_->param(name);
+  if (!spec) {
+    std::vector<std::string> accepted;
+    for (const auto& p : info_->params) accepted.push_back(p.name);
+    throw SceneError(value.where,
+                     "unknown parameter '" + name + "' for " + plugin_name(*info_) + " (accepted: " + join(accepted) + ")");
+  }
+  const std::string category =
+      value.kind == ValueKind::Object ? std::get<ObjectValue>(value.value).category : std::string();
+  if (!kind_fits(value.kind, spec->type, category)) {
+    const std::string given = value.kind == ValueKind::Object ? category : to_string(value.kind);
+    throw SceneError(value.where, "parameter '" + name + "' of " + plugin_name(*info_) + " must be " +
+                                      to_string(spec->type) + ", not " + given);
+  }
+  if (find(name)) throw SceneError(value.where, "parameter '" + name + "' is given twice");
+  values_.emplace_back(name, std::move(value));
+}
+
+void Properties::add_child(ObjectValue child, const SourceLocation& where) {
+  const auto& accepted = info_->child_categories;
+  if (std::find(accepted.begin(), accepted.end(), child.category) == accepted.end())
+    throw SceneError(where, plugin_name(*info_) + " does not take a nested <" + child.category +
+                                "> (accepted: " + join(accepted) + ")");
+  children_.emplace_back(std::move(child), where);
+}
+
+const PropertyValue* Properties::find(const std::string& name) const {
+  for (const auto& [key, value] : values_)
+    if (key == name) return &value;
+  return nullptr;
+}
+
+SceneError Properties::error(const std::string& name, const std::string& problem) const {
+  const PropertyValue* v = find(name);
+  return SceneError(v ? v->where : where_, "parameter '" + name + "' of " + plugin_name(*info_) + ": " + problem);
+}
+
+PropertyValue Properties::value_or_default(const std::string& name, ParamType wanted) const {
+  const ParamSpec* spec = info_->param(name);
+  if (!spec || spec->type != wanted)
+    throw std::logic_error(plugin_name(*info_) + " reads undeclared parameter " + name + " as " + to_string(wanted));
+  if (const PropertyValue* v = find(name)) return *v;
+  if (!spec->default_value) throw SceneError(where_, plugin_name(*info_) + " requires parameter '" + name + "'");
+  return parse_value_text(default_kind(wanted), *spec->default_value, where_);
+}
+
+bool Properties::get_bool(const std::string& name) const {
+  return std::get<bool>(value_or_default(name, ParamType::Boolean).value);
+}
+
+int64_t Properties::get_int(const std::string& name) const {
+  return std::get<int64_t>(value_or_default(name, ParamType::Integer).value);
+}
+
+float Properties::get_float(const std::string& name) const {
+  const PropertyValue v = value_or_default(name, ParamType::Float);
+  return v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
+}
+
+std::string Properties::get_string(const std::string& name) const {
+  return std::get<std::string>(value_or_default(name, ParamType::String).value);
+}
+
+std::filesystem::path Properties::get_path(const std::string& name) const {
+  const PropertyValue v = value_or_default(name, ParamType::String);
+  const std::filesystem::path file = std::get<std::string>(v.value);
+  if (file.is_absolute()) return file;
+  return std::filesystem::path(v.where.file).parent_path() / file;
+}
+
+namespace {
+
+Color as_color(const PropertyValue& v) {
+  switch (v.kind) {
+    case ValueKind::Integer: return Color(float(std::get<int64_t>(v.value)));
+    case ValueKind::Float: return Color(float(std::get<double>(v.value)));
+    default: return std::get<Color>(v.value);
+  }
+}
+
+}  // namespace
+
+Color Properties::get_color(const std::string& name) const { return as_color(value_or_default(name, ParamType::Color)); }
+
+Vec3 Properties::get_point(const std::string& name) const {
+  return std::get<Vec3>(value_or_default(name, ParamType::Point).value);
+}
+
+Vec3 Properties::get_vector(const std::string& name) const {
+  return std::get<Vec3>(value_or_default(name, ParamType::Vector).value);
+}
+
+Transform Properties::get_transform(const std::string& name) const {
+  return std::get<Transform>(value_or_default(name, ParamType::Transform).value);
+}
+
+std::shared_ptr<Texture> Properties::get_texture(const std::string& name) const {
+  const PropertyValue v = value_or_default(name, ParamType::Texture);
+  if (v.kind == ValueKind::Object) return std::dynamic_pointer_cast<Texture>(std::get<ObjectValue>(v.value).object);
+  return std::make_shared<ConstantTexture>(as_color(v));
+}
+
+}  // namespace caustica

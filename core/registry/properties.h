@@ -1,0 +1,72 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/registry/property_value.h"
+#include "core/registry/registry.h"
+#include "core/texture/texture.h"
+
+namespace caustica {
+
+// The parameters and nested objects handed to one plugin's constructor.
+// Getters fall back to the default the plugin declared, so a default is
+// written once, in the registration.
+class Properties {
+ public:
+  Properties(const PluginInfo& info, SourceLocation where) : info_(&info), where_(std::move(where)) {}
+
+  // Loader side; each checks the value against the declaration and throws
+  // SceneError naming the file, line and what is accepted.
+  void set(const std::string& name, PropertyValue value);
+  void add_child(ObjectValue child, const SourceLocation& where);
+
+  const PluginInfo& info() const { return *info_; }
+  const SourceLocation& where() const { return where_; }
+  bool has(const std::string& name) const { return find(name) != nullptr; }
+
+  bool get_bool(const std::string& name) const;
+  int64_t get_int(const std::string& name) const;
+  float get_float(const std::string& name) const;
+  std::string get_string(const std::string& name) const;
+  // A string naming a file, resolved against the folder of the scene file it was written in.
+  std::filesystem::path get_path(const std::string& name) const;
+  Color get_color(const std::string& name) const;
+  Vec3 get_point(const std::string& name) const;
+  Vec3 get_vector(const std::string& name) const;
+  Transform get_transform(const std::string& name) const;
+  std::shared_ptr<Texture> get_texture(const std::string& name) const;
+
+  template <class T>
+  std::vector<std::shared_ptr<T>> children(const std::string& category) const {
+    std::vector<std::shared_ptr<T>> out;
+    for (const auto& [child, where] : children_)
+      if (child.category == category) out.push_back(std::dynamic_pointer_cast<T>(child.object));
+    return out;
+  }
+  // At most one nested object of `category`; null if there is none.
+  template <class T>
+  std::shared_ptr<T> child(const std::string& category) const {
+    auto all = children<T>(category);
+    if (all.size() > 1) throw SceneError(where_, info_->category + " '" + info_->name + "' takes one " + category);
+    return all.empty() ? nullptr : all.front();
+  }
+
+  // An error about parameter `name`, placed where it was written (or at the
+  // plugin if it was left at its default).
+  SceneError error(const std::string& name, const std::string& problem) const;
+
+ private:
+  const PropertyValue* find(const std::string& name) const;
+  PropertyValue value_or_default(const std::string& name, ParamType wanted) const;
+
+  const PluginInfo* info_;
+  SourceLocation where_;
+  std::vector<std::pair<std::string, PropertyValue>> values_;
+  std::vector<std::pair<ObjectValue, SourceLocation>> children_;
+};
+
+}  // namespace caustica

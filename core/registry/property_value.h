@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "core/math/color.h"
+#include "core/math/transform.h"
+#include "core/registry/param_spec.h"
+#include "core/registry/plugin.h"
+#include "core/scene/scene_error.h"
+
+namespace caustica {
+
+enum class ValueKind { Boolean, Integer, Float, String, Rgb, Point, Vector, Transform, Object };
+
+const char* to_string(ValueKind k);
+
+struct ObjectValue {
+  std::string category;
+  std::shared_ptr<Plugin> object;
+};
+
+// One named value given to a plugin, with where it was written.
+struct PropertyValue {
+  ValueKind kind = ValueKind::Float;
+  std::variant<bool, int64_t, double, std::string, Color, Vec3, Transform, ObjectValue> value;
+  SourceLocation where;
+};
+
+// Parses the text of a value element of kind `kind` (as in <float value="...">);
+// throws SceneError at `where` on malformed text.
+PropertyValue parse_value_text(ValueKind kind, const std::string& text, const SourceLocation& where);
+
+// Whether a value of kind `given` may be passed where `wanted` is declared
+// (an integer is a valid float, a float a valid grey colour, and so on).
+bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_category);
+
+// The value kind a parameter's default text is parsed as.
+ValueKind default_kind(ParamType t);
+
+}  // namespace caustica

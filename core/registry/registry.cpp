@@ -1,0 +1,52 @@
+#include "core/registry/registry.h"
+
+#include <stdexcept>
+
+namespace caustica {
+
+const char* to_string(ParamType t) {
+  switch (t) {
+    case ParamType::Boolean: return "boolean";
+    case ParamType::Integer: return "integer";
+    case ParamType::Float: return "float";
+    case ParamType::String: return "string";
+    case ParamType::Color: return "rgb";
+    case ParamType::Texture: return "texture";
+    case ParamType::Point: return "point";
+    case ParamType::Vector: return "vector";
+    case ParamType::Transform: return "transform";
+  }
+  return "?";
+}
+
+const ParamSpec* PluginInfo::param(const std::string& param_name) const {
+  for (const ParamSpec& p : params)
+    if (p.name == param_name) return &p;
+  return nullptr;
+}
+
+Registry& Registry::instance() {
+  static Registry registry;
+  return registry;
+}
+
+bool Registry::add(PluginInfo info) {
+  auto key = std::make_pair(info.category, info.name);
+  if (plugins_.count(key)) throw std::logic_error("plugin registered twice: " + info.category + " " + info.name);
+  plugins_.emplace(std::move(key), std::move(info));
+  return true;
+}
+
+const PluginInfo* Registry::find(const std::string& category, const std::string& name) const {
+  auto it = plugins_.find({category, name});
+  return it == plugins_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> Registry::names(const std::string& category) const {
+  std::vector<std::string> out;
+  for (const auto& [key, info] : plugins_)
+    if (key.first == category) out.push_back(key.second);
+  return out;
+}
+
+}  // namespace caustica

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/registry/param_spec.h"
+#include "core/registry/plugin.h"
+
+namespace caustica {
+
+class Properties;
+
+// What a plugin accepts: its parameters and the kinds of nested objects
+// (categories such as "bsdf" or "emitter") it takes.
+struct PluginInfo {
+  std::string category;  // the XML tag: integrator, sensor, film, sampler, rfilter, shape, bsdf, emitter, texture
+  std::string name;      // the type="..." value
+  std::vector<ParamSpec> params;
+  std::vector<std::string> child_categories;
+  std::function<std::shared_ptr<Plugin>(const Properties&)> create;
+
+  const ParamSpec* param(const std::string& param_name) const;
+};
+
+class Registry {
+ public:
+  static Registry& instance();
+
+  // Returns true so that registration can initialise a namespace-scope constant.
+  bool add(PluginInfo info);
+  const PluginInfo* find(const std::string& category, const std::string& name) const;
+  std::vector<std::string> names(const std::string& category) const;
+
+ private:
+  std::map<std::pair<std::string, std::string>, PluginInfo> plugins_;
+};
+
+// Registers a plugin from its own translation unit:
+//   CAUSTICA_REGISTER_PLUGIN(DiffuseBsdf, "bsdf", "diffuse", {{params...}}, {child categories});
+#define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                           \
+  [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add( \
+      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {     \
+                               return std::shared_ptr<::caustica::Plugin>(std::make_shared<Class>(props)); \
+                             }})
+
+}  // namespace caustica

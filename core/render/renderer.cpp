@@ -1,0 +1,108 @@
+#include "core/render/renderer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace caustica {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct Tile {
+  Vec2i lo, hi;
+};
+
+std::vector<Tile> make_tiles(int width, int height) {
+  std::vector<Tile> tiles;
+  for (int y = 0; y < height; y += kTileSize)
+    for (int x = 0; x < width; x += kTileSize)
+      tiles.push_back({{x, y}, {std::min(x + kTileSize, width), std::min(y + kTileSize, height)}});
+  return tiles;
+}
+
+// Everything one sample needs; `values` is scratch space of channel size.
+void run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed,
+                std::span<float> values, float* weight) {
+  sampler.start_sample(pixel, index, seed);
+  const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
+  const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
+  const Ray ray = scene.sensor().generate_ray(raster, sampler.next_2d());
+  scene.integrator()->sample(scene, ray, sampler, values);
+  *weight = fs.weight;
+}
+
+void render_pass(const Scene& scene, const std::vector<Tile>& tiles, uint32_t first, uint32_t count, uint64_t seed,
+                 FilmBuffer& film) {
+  struct ThreadState {
+    std::unique_ptr<Sampler> sampler;
+    std::vector<float> values;
+  };
+  tbb::enumerable_thread_specific<ThreadState> states([&] {
+    return ThreadState{scene.sensor().sampler()->clone(), std::vector<float>(film.channel_count())};
+  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+    ThreadState& state = states.local();
+    for (size_t t = range.begin(); t != range.end(); ++t)
+      for (int y = tiles[t].lo.y; y < tiles[t].hi.y; ++y)
+        for (int x = tiles[t].lo.x; x < tiles[t].hi.x; ++x)
+          for (uint32_t i = first; i < first + count; ++i) {
+            float weight = 0;
+            run_sample(scene, *state.sampler, {x, y}, i, seed, state.values, &weight);
+            film.add_sample({{x, y}, i}, state.values, weight);
+          }
+  });
+}
+
+}  // namespace
+
+RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer& film,
+                   const std::function<void(const RenderProgress&)>& on_pass) {
+  const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(threads);
+  const auto tiles = make_tiles(film.width(), film.height());
+  const bool timed = options.time_limit > 0;
+  const uint32_t target = timed ? 0 : (options.spp > 0 ? options.spp : scene.sensor().sampler()->sample_count());
+  const uint64_t rays_before = scene.rays_traced();
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+
+  scene.integrator()->prepare(scene);
+  uint32_t done = 0;
+  double last_pass = 0;
+  // Small passes at first so progress and time budgets react quickly.
+  uint32_t pass = 1;
+  while (timed ? elapsed() + last_pass < options.time_limit || done == 0 : done < target) {
+    const uint32_t count = timed ? pass : std::min(pass, target - done);
+    const double pass_start = elapsed();
+    arena.execute([&] { render_pass(scene, tiles, done, count, options.seed, film); });
+    done += count;
+    last_pass = elapsed() - pass_start;
+    pass = std::min<uint32_t>(pass * 2, 16);
+    if (on_pass) on_pass({done, target, elapsed(), scene.rays_traced() - rays_before});
+  }
+
+  RenderStats stats;
+  stats.seconds = elapsed();
+  stats.spp = done;
+  stats.samples = uint64_t(done) * film.width() * film.height();
+  stats.rays = scene.rays_traced() - rays_before;
+  stats.dropped = film.dropped_samples();
+  stats.first_dropped = film.first_dropped();
+  return stats;
+}
+
+std::vector<float> replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed) {
+  auto sampler = scene.sensor().sampler()->clone();
+  std::vector<float> values(scene.integrator()->channels().size());
+  float weight = 0;
+  run_sample(scene, *sampler, pixel, index, seed, values, &weight);
+  return values;
+}
+
+}  // namespace caustica

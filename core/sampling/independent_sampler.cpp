@@ -1,0 +1,59 @@
+// independent: uniform random numbers from PCG32, keyed by (seed, pixel,
+// sample index) and skipped ahead to the sample, so every sample can be
+// reproduced on its own.
+//
+// Parameters
+//   sample_count  integer  4  samples per pixel
+//   seed          integer  0  offsets every random number
+//
+//   <sampler type="independent"><integer name="sample_count" value="64"/></sampler>
+
+#include "core/registry/properties.h"
+#include "core/sampling/pcg32.h"
+#include "core/sampling/sampler.h"
+
+namespace caustica {
+namespace {
+
+// Dimensions one sample may consume before it would run into the next
+// sample's stream; far beyond any path's needs.
+constexpr uint64_t kDimensionsPerSample = uint64_t(1) << 20;
+
+class IndependentSampler final : public Sampler {
+ public:
+  explicit IndependentSampler(const Properties& props) : Sampler(sample_count(props)), seed_(props.get_int("seed")) {}
+  IndependentSampler(const IndependentSampler&) = default;
+
+  std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
+
+  void start_sample(Vec2i pixel, uint64_t sample_index, uint64_t seed) override {
+    const uint64_t pixel_key = (uint64_t(uint32_t(pixel.y)) << 32) | uint32_t(pixel.x);
+    rng_.seed(mix_bits(pixel_key ^ mix_bits(seed + uint64_t(seed_))), mix_bits(pixel_key + 0x9e3779b97f4a7c15ULL));
+    rng_.advance(sample_index * kDimensionsPerSample);
+  }
+
+  float next_1d() override { return rng_.next_float(); }
+  Vec2 next_2d() override {
+    const float a = rng_.next_float();
+    return {a, rng_.next_float()};
+  }
+
+ private:
+  static uint32_t sample_count(const Properties& props) {
+    const int64_t n = props.get_int("sample_count");
+    if (n <= 0 || n > (int64_t(1) << 32) - 1) throw props.error("sample_count", "must be a positive 32-bit count");
+    return uint32_t(n);
+  }
+
+  int64_t seed_;
+  Pcg32 rng_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(IndependentSampler, "sampler", "independent",
+                         {{"sample_count", ParamType::Integer, "4", "samples per pixel"},
+                          {"seed", ParamType::Integer, "0", "random seed"}},
+                         {});
+
+}  // namespace caustica

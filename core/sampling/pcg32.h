@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstdint>
+
+#include "core/math/constants.h"
+
+namespace caustica {
+
+// O'Neill's PCG32 (XSH-RR output, 64-bit LCG state), with the logarithmic
+// skip-ahead that makes a sample's random numbers a pure function of where
+// they sit in the stream.
+class Pcg32 {
+ public:
+  Pcg32() { seed(0x853c49e6748fea9bULL, 0xda3e39cb94b95bdbULL); }
+  Pcg32(uint64_t state, uint64_t stream) { seed(state, stream); }
+
+  void seed(uint64_t init_state, uint64_t stream) {
+    state_ = 0;
+    inc_ = (stream << 1u) | 1u;
+    next_u32();
+    state_ += init_state;
+    next_u32();
+  }
+
+  uint32_t next_u32() {
+    const uint64_t old = state_;
+    state_ = old * kMultiplier + inc_;
+    const auto xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
+    const auto rot = uint32_t(old >> 59u);
+    return (xorshifted >> rot) | (xorshifted << ((~rot + 1u) & 31));
+  }
+
+  // Uniform in [0, 1): the top 24 bits, so every value is exactly representable.
+  float next_float() { return float(next_u32() >> 8) * 0x1p-24f; }
+
+  // Jumps `delta` steps ahead in O(log delta) (Brown, "Random number
+  // generation with arbitrary strides", 1994).
+  void advance(uint64_t delta) {
+    uint64_t mult = kMultiplier, plus = inc_, acc_mult = 1, acc_plus = 0;
+    while (delta > 0) {
+      if (delta & 1) {
+        acc_mult *= mult;
+        acc_plus = acc_plus * mult + plus;
+      }
+      plus = (mult + 1) * plus;
+      mult *= mult;
+      delta /= 2;
+    }
+    state_ = acc_mult * state_ + acc_plus;
+  }
+
+ private:
+  static constexpr uint64_t kMultiplier = 0x5851f42d4c957f2dULL;
+  uint64_t state_ = 0, inc_ = 0;
+};
+
+// 64-bit finaliser of MurmurHash3: spreads similar keys across the whole range.
+constexpr uint64_t mix_bits(uint64_t v) {
+  v ^= v >> 33;
+  v *= 0xff51afd7ed558ccdULL;
+  v ^= v >> 33;
+  v *= 0xc4ceb9fe1a85ec53ULL;
+  v ^= v >> 33;
+  return v;
+}
+
+}  // namespace caustica

@@ -1,0 +1,27 @@
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+Scene::Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared_ptr<Emitter>> emitters,
+             std::shared_ptr<Sensor> sensor, std::shared_ptr<Integrator> integrator, std::string source)
+    : shapes_(std::move(shapes)),
+      emitters_(std::move(emitters)),
+      sensor_(std::move(sensor)),
+      integrator_(std::move(integrator)),
+      source_(std::move(source)) {
+  for (const auto& s : shapes_) bounds_.expand(s->bounds());
+  for (const auto& e : emitters_) {
+    e->prepare(bounds_);
+    if (e->is_infinite()) infinite_.push_back(e.get());
+  }
+  accel_ = std::make_unique<EmbreeScene>(shapes_);
+  lights_ = std::make_unique<LightSelection>(emitters_);
+}
+
+uint64_t Scene::rays_traced() const {
+  uint64_t total = 0;
+  for (uint64_t n : rays_traced_) total += n;
+  return total;
+}
+
+}  // namespace caustica

@@ -1,0 +1,214 @@
+#include "core/scene/scene_loader.h"
+
+#include <set>
+
+#include "core/bsdf/bsdf.h"
+#include "core/registry/properties.h"
+#include "core/scene/transform_parser.h"
+#include "core/scene/xml_reader.h"
+
+namespace caustica {
+
+namespace {
+
+const std::set<std::string> kObjectTags = {"integrator", "sensor", "film",    "sampler", "rfilter",
+                                           "shape",      "bsdf",   "emitter", "texture"};
+const std::map<std::string, ValueKind> kValueTags = {
+    {"float", ValueKind::Float},  {"integer", ValueKind::Integer}, {"boolean", ValueKind::Boolean},
+    {"string", ValueKind::String}, {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
+    {"point", ValueKind::Point},  {"vector", ValueKind::Vector}};
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+const std::string& required_attribute(const XmlNode& node, const char* name) {
+  const std::string* v = node.attribute(name);
+  if (!v) throw SceneError(node.where, "<" + node.tag + "> needs a '" + name + "' attribute");
+  return *v;
+}
+
+void check_attributes(const XmlNode& node, std::initializer_list<const char*> allowed) {
+  for (const auto& [key, value] : node.attributes) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || key == a;
+    if (!ok) throw SceneError(node.where, "unexpected attribute '" + key + "' on <" + node.tag + ">");
+  }
+}
+
+PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
+  if ((kind == ValueKind::Point || kind == ValueKind::Vector) && !node.attribute("value")) {
+    check_attributes(node, {"name", "x", "y", "z"});
+    const auto coord = [&](const char* a) {
+      const std::string* v = node.attribute(a);
+      return v ? std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value) : 0.0;
+    };
+    return {kind, Vec3(float(coord("x")), float(coord("y")), float(coord("z"))), node.where};
+  }
+  check_attributes(node, {"name", "value"});
+  const std::string& text = required_attribute(node, "value");
+  if (node.tag == "spectrum" && text.find(':') != std::string::npos)
+    throw SceneError(node.where, "<spectrum> takes a single value here, not wavelength:value pairs");
+  return parse_value_text(kind, text, node.where);
+}
+
+// Instantiates plugins from nodes, each object once, resolving <ref> by id.
+class Instantiator {
+ public:
+  explicit Instantiator(const XmlNode& root) { collect_ids(root, true); }
+
+  ObjectValue build(const XmlNode& node) {
+    if (const std::string* id = node.attribute("id")) {
+      if (auto it = built_.find(*id); it != built_.end()) return it->second;
+      if (!building_.insert(*id).second) throw SceneError(node.where, "'" + *id + "' refers to itself");
+    }
+    ObjectValue obj = create(node);
+    if (const std::string* id = node.attribute("id")) {
+      building_.erase(*id);
+      built_[*id] = obj;
+    }
+    return obj;
+  }
+
+  ObjectValue resolve_ref(const XmlNode& ref) {
+    check_attributes(ref, {"id", "name"});
+    const std::string& id = required_attribute(ref, "id");
+    const auto it = ids_.find(id);
+    if (it == ids_.end()) throw SceneError(ref.where, "reference to undefined id '" + id + "'");
+    return build(*it->second);
+  }
+
+  std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
+
+ private:
+  void collect_ids(const XmlNode& node, bool is_root) {
+    if (!is_root && kObjectTags.count(node.tag))
+      if (const std::string* id = node.attribute("id")) {
+        if (ids_.count(*id))
+          throw SceneError(node.where, "id '" + *id + "' is already used at " + ids_[*id]->where.str());
+        ids_[*id] = &node;
+      }
+    for (const XmlNode& child : node.children) collect_ids(child, false);
+  }
+
+  ObjectValue create(const XmlNode& node) {
+    check_attributes(node, {"type", "id", "name"});
+    const std::string& type = required_attribute(node, "type");
+    const PluginInfo* info = Registry::instance().find(node.tag, type);
+    if (!info)
+      throw SceneError(node.where, "unknown " + node.tag + " type '" + type + "' (available: " +
+                                       join(Registry::instance().names(node.tag)) + ")");
+    Properties props(*info, node.where);
+    for (const XmlNode& child : node.children) add_child(props, child);
+
+    std::shared_ptr<Plugin> plugin;
+    try {
+      plugin = info->create(props);
+    } catch (const SceneError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw SceneError(node.where, node.tag + " '" + type + "': " + e.what());
+    }
+    if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
+    if (node.tag == "emitter") emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
+    return {node.tag, plugin};
+  }
+
+  void add_child(Properties& props, const XmlNode& child) {
+    if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
+      props.set(required_attribute(child, "name"), parse_value_element(child, kind->second));
+    } else if (child.tag == "transform") {
+      check_attributes(child, {"name"});
+      props.set(required_attribute(child, "name"), {ValueKind::Transform, parse_transform(child), child.where});
+    } else if (kObjectTags.count(child.tag) || child.tag == "ref") {
+      ObjectValue obj = child.tag == "ref" ? resolve_ref(child) : build(child);
+      if (const std::string* name = child.attribute("name"))
+        props.set(*name, {ValueKind::Object, obj, child.where});
+      else
+        props.add_child(obj, child.where);
+    } else {
+      throw SceneError(child.where, "unknown element <" + child.tag + ">");
+    }
+  }
+
+  void finish_shape(const std::shared_ptr<Shape>& shape, const Properties& props, const XmlNode& node) {
+    auto bsdf = props.child<Bsdf>("bsdf");
+    if (!bsdf) {
+      // As in Mitsuba, a shape without a material is a grey diffuse one.
+      const PluginInfo* diffuse = Registry::instance().find("bsdf", "diffuse");
+      bsdf = std::static_pointer_cast<Bsdf>(diffuse->create(Properties(*diffuse, node.where)));
+    }
+    shape->set_bsdf(bsdf);
+    if (auto emitter = props.child<Emitter>("emitter")) {
+      try {
+        emitter->attach_shape(shape.get());
+      } catch (const SceneError&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw SceneError(node.where, e.what());
+      }
+      shape->set_emitter(emitter.get());
+    }
+  }
+
+  std::map<std::string, const XmlNode*> ids_;
+  std::map<std::string, ObjectValue> built_;
+  std::set<std::string> building_;
+};
+
+std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& source) {
+  Instantiator inst(root);
+  std::vector<std::shared_ptr<Shape>> shapes;
+  std::shared_ptr<Sensor> sensor;
+  std::shared_ptr<Integrator> integrator;
+  for (const XmlNode& node : root.children) {
+    if (!kObjectTags.count(node.tag) && node.tag != "ref")
+      throw SceneError(node.where, "unexpected <" + node.tag + "> at the top level of a scene");
+    if (node.tag == "ref") throw SceneError(node.where, "<ref> must be nested in an object");
+    const ObjectValue obj = inst.build(node);
+    if (node.tag == "shape") {
+      shapes.push_back(std::static_pointer_cast<Shape>(obj.object));
+    } else if (node.tag == "sensor") {
+      if (sensor) throw SceneError(node.where, "a scene may have only one sensor");
+      sensor = std::static_pointer_cast<Sensor>(obj.object);
+    } else if (node.tag == "integrator") {
+      if (integrator) throw SceneError(node.where, "a scene may have only one integrator");
+      integrator = std::static_pointer_cast<Integrator>(obj.object);
+    } else if (node.tag == "emitter" && std::static_pointer_cast<Emitter>(obj.object)->is_area()) {
+      throw SceneError(node.where, "an area emitter must be nested in a shape");
+    }
+  }
+  if (!sensor) {
+    const PluginInfo* info = Registry::instance().find("sensor", "perspective");
+    sensor = std::static_pointer_cast<Sensor>(info->create(Properties(*info, root.where)));
+  }
+  if (!integrator) integrator = make_default_integrator("path");
+  for (const auto& e : inst.emitters)
+    if (e->is_area() && !std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->emitter() == e.get(); }))
+      throw SceneError(root.where, "an area emitter is nested in a shape that is not part of the scene");
+  return std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), std::move(integrator),
+                                 source);
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const Defines& defines) {
+  return instantiate(read_scene_xml(file, defines), file.string());
+}
+
+std::unique_ptr<Scene> load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
+                                         const Defines& defines) {
+  return instantiate(read_scene_xml_string(xml, file_for_messages, defines), file_for_messages.string());
+}
+
+std::shared_ptr<Integrator> make_default_integrator(const std::string& name) {
+  const PluginInfo* info = Registry::instance().find("integrator", name);
+  if (!info)
+    throw std::invalid_argument("unknown integrator '" + name + "' (available: " +
+                                join(Registry::instance().names("integrator")) + ")");
+  return std::static_pointer_cast<Integrator>(info->create(Properties(*info, {name, 0})));
+}
+
+}  // namespace caustica

@@ -1,0 +1,102 @@
+#include "core/scene/transform_parser.h"
+
+#include "core/registry/property_value.h"
+
+namespace caustica {
+
+namespace {
+
+float number(const XmlNode& node, const char* attr, float fallback) {
+  const std::string* v = node.attribute(attr);
+  return v ? float(std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value)) : fallback;
+}
+
+Vec3 triple(const XmlNode& node, const char* attr) {
+  const std::string* v = node.attribute(attr);
+  if (!v) throw SceneError(node.where, "<" + node.tag + "> needs a '" + attr + "' attribute");
+  return std::get<Vec3>(parse_value_text(ValueKind::Vector, *v, node.where).value);
+}
+
+// value="x, y, z" or x/y/z attributes, each defaulting to `fallback`.
+Vec3 xyz(const XmlNode& node, float fallback) {
+  if (node.attribute("value")) return triple(node, "value");
+  return {number(node, "x", fallback), number(node, "y", fallback), number(node, "z", fallback)};
+}
+
+void check_attributes(const XmlNode& node, std::initializer_list<const char*> allowed) {
+  for (const auto& [key, value] : node.attributes) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || key == a;
+    if (!ok) throw SceneError(node.where, "unexpected attribute '" + key + "' on <" + node.tag + ">");
+  }
+}
+
+Transform parse_step(const XmlNode& step) {
+  if (step.tag == "translate") {
+    check_attributes(step, {"x", "y", "z", "value"});
+    return Transform::translate(xyz(step, 0));
+  }
+  if (step.tag == "scale") {
+    check_attributes(step, {"x", "y", "z", "value"});
+    if (const std::string* v = step.attribute("value"); v && v->find_first_of(", ") == std::string::npos) {
+      const float s = number(step, "value", 1);
+      return Transform::scale({s, s, s});
+    }
+    return Transform::scale(xyz(step, 1));
+  }
+  if (step.tag == "rotate") {
+    check_attributes(step, {"x", "y", "z", "value", "angle"});
+    const Vec3 axis = xyz(step, 0);
+    if (squared_length(axis) == 0) throw SceneError(step.where, "<rotate> needs a non-zero axis");
+    return Transform::rotate(axis, number(step, "angle", 0));
+  }
+  if (step.tag == "matrix") {
+    check_attributes(step, {"value"});
+    const std::string* v = step.attribute("value");
+    if (!v) throw SceneError(step.where, "<matrix> needs a 'value' attribute");
+    std::vector<float> values;
+    std::string token;
+    for (char c : *v + " ") {
+      if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+        if (!token.empty())
+          values.push_back(float(std::get<double>(parse_value_text(ValueKind::Float, token, step.where).value)));
+        token.clear();
+      } else {
+        token += c;
+      }
+    }
+    Matrix4 m = Matrix4::identity();
+    if (values.size() == 16) {
+      for (int i = 0; i < 16; ++i) m.m[i / 4][i % 4] = values[i];
+    } else if (values.size() == 9) {
+      for (int i = 0; i < 9; ++i) m.m[i / 3][i % 3] = values[i];
+    } else {
+      throw SceneError(step.where, "<matrix> needs 16 (or 9) numbers, found " + std::to_string(values.size()));
+    }
+    try {
+      return Transform(m);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(step.where, e.what());
+    }
+  }
+  if (step.tag == "lookat") {
+    check_attributes(step, {"origin", "target", "up"});
+    const Vec3 up = step.attribute("up") ? triple(step, "up") : Vec3(0, 1, 0);
+    try {
+      return Transform::look_at(triple(step, "origin"), triple(step, "target"), up);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(step.where, e.what());
+    }
+  }
+  throw SceneError(step.where, "unknown transform step <" + step.tag + "> (accepted: translate, rotate, scale, matrix, lookat)");
+}
+
+}  // namespace
+
+Transform parse_transform(const XmlNode& node) {
+  Transform t;
+  for (const XmlNode& step : node.children) t = parse_step(step) * t;
+  return t;
+}
+
+}  // namespace caustica

@@ -1,0 +1,12 @@
+#pragma once
+
+#include "core/math/transform.h"
+#include "core/scene/xml_node.h"
+
+namespace caustica {
+
+// Composes a <transform>'s children (translate, rotate, scale, matrix,
+// lookat) in file order, each applied after the previous ones.
+Transform parse_transform(const XmlNode& node);
+
+}  // namespace caustica

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/scene/scene_error.h"
+
+namespace caustica {
+
+// One element of a scene file, detached from the XML library, carrying the
+// place it came from so every later stage can report errors there.
+struct XmlNode {
+  std::string tag;
+  std::vector<std::pair<std::string, std::string>> attributes;  // in file order
+  std::vector<XmlNode> children;
+  SourceLocation where;
+
+  const std::string* attribute(std::string_view name) const {
+    for (const auto& [key, value] : attributes)
+      if (key == name) return &value;
+    return nullptr;
+  }
+};
+
+}  // namespace caustica

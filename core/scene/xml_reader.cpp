@@ -1,0 +1,239 @@
+#include "core/scene/xml_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <fstream>
+#include <optional>
+#include <pugixml.hpp>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace caustica {
+namespace {
+
+namespace fs = std::filesystem;
+using Defines = std::map<std::string, std::string>;
+
+bool is_upper(char c) { return std::isupper(static_cast<unsigned char>(c)) != 0; }
+bool is_lower(char c) { return std::islower(static_cast<unsigned char>(c)) != 0; }
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+bool is_parameter_name(std::string_view name) {
+  return !name.empty() && is_name_start(name[0]) && std::all_of(name.begin(), name.end(), is_name_char);
+}
+
+// pugixml only reports byte offsets; every node we hand on needs a line.
+class LineTable {
+ public:
+  explicit LineTable(std::string_view text) {
+    for (size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') newlines_.push_back(i);
+  }
+
+  int line_of(std::ptrdiff_t offset) const {
+    if (offset < 0) return 0;
+    auto it = std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<size_t>(offset));
+    return static_cast<int>(it - newlines_.begin()) + 1;
+  }
+
+ private:
+  std::vector<size_t> newlines_;
+};
+
+// Returns the major version, or nothing if `version` is not MAJOR.MINOR.PATCH.
+std::optional<int> parse_major_version(std::string_view version) {
+  int major = 0;
+  int parts = 0;
+  size_t start = 0;
+  while (true) {
+    size_t end = std::min(version.find('.', start), version.size());
+    std::string_view part = version.substr(start, end - start);
+    if (part.empty() || !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return std::nullopt;
+    if (parts == 0 && std::from_chars(part.data(), part.data() + part.size(), major).ec != std::errc()) {
+      return std::nullopt;
+    }
+    ++parts;
+    if (end == version.size()) break;
+    start = end + 1;
+  }
+  if (parts != 3) return std::nullopt;
+  return major;
+}
+
+// The renames Mitsuba 3 applies to 0.x files that need no knowledge of the plugin.
+void upgrade_from_0x(XmlNode& node) {
+  if (node.tag == "lookAt")
+    node.tag = "lookat";
+  else if (node.tag == "srgb")
+    node.tag = "rgb";
+  for (auto& [key, value] : node.attributes) {
+    if (key == "name")
+      value = camel_to_snake(value);
+    else if (key == "type" && node.tag == "film" && value == "ldrfilm")
+      value = "hdrfilm";  // we always write HDR; tonemapping is a later step
+  }
+}
+
+// Identifies a file for include-cycle detection even when reached by different relative paths.
+fs::path identity_of(const fs::path& file) {
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(file, ec);
+  return ec ? file.lexically_normal() : canonical;
+}
+
+struct FileContext {
+  fs::path path;
+  std::string name;
+  LineTable lines;
+  bool upgrade = false;
+
+  SourceLocation at(const pugi::xml_node& node) const { return {name, lines.line_of(node.offset_debug())}; }
+};
+
+// Parameters are shared across included files, so one reader serves the whole tree.
+class Reader {
+ public:
+  explicit Reader(const Defines& defines) : params_(defines) {}
+
+  XmlNode read_file(const fs::path& file, const SourceLocation& blame, const std::string& what) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SceneError(blame, "cannot open " + what + " '" + file.string() + "'");
+    std::ostringstream contents;
+    contents << in.rdbuf();
+    return read_text(contents.str(), file);
+  }
+
+  XmlNode read_text(std::string_view text, const fs::path& file) {
+    FileContext ctx{file, file.string(), LineTable(text)};
+    pugi::xml_document doc;
+    pugi::xml_parse_result result = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!result)
+      throw SceneError({ctx.name, ctx.lines.line_of(result.offset)},
+                       std::string("malformed XML: ") + result.description());
+    pugi::xml_node root = doc.document_element();
+    if (std::string_view(root.name()) != "scene")
+      throw SceneError(ctx.at(root), "root element must be <scene>, found <" + std::string(root.name()) + ">");
+
+    if (!file.empty()) open_files_.emplace_back(identity_of(file), ctx.name);
+    define_defaults(root, ctx);
+    if (pugi::xml_attribute version = root.attribute("version")) {
+      std::string text_version = substitute(version.value(), ctx.at(root));
+      std::optional<int> major = parse_major_version(text_version);
+      if (!major) throw SceneError(ctx.at(root), "invalid version '" + text_version + "' (expected MAJOR.MINOR.PATCH)");
+      ctx.upgrade = *major < 2;
+    }
+    XmlNode node = convert(root, ctx, /*is_root=*/true);
+    if (!file.empty()) open_files_.pop_back();
+    return node;
+  }
+
+ private:
+  // Defaults are gathered before anything else so a parameter may be used above its <default>.
+  void define_defaults(const pugi::xml_node& root, const FileContext& ctx) {
+    for (pugi::xml_node child : root.children("default")) {
+      SourceLocation where = ctx.at(child);
+      pugi::xml_attribute name = child.attribute("name");
+      pugi::xml_attribute value = child.attribute("value");
+      if (!name || !value) throw SceneError(where, "<default> needs both a 'name' and a 'value' attribute");
+      if (!is_parameter_name(name.value()))
+        throw SceneError(where, "invalid parameter name '" + std::string(name.value()) + "' in <default>");
+      // try_emplace keeps what -D (or an earlier default) already set.
+      params_.try_emplace(name.value(), substitute(value.value(), where));
+    }
+  }
+
+  std::string substitute(std::string_view value, const SourceLocation& where) const {
+    std::string out;
+    size_t i = 0;
+    while (i < value.size()) {
+      if (value[i] != '$' || i + 1 == value.size() || !is_name_start(value[i + 1])) {
+        out += value[i++];
+        continue;
+      }
+      size_t end = i + 2;
+      while (end < value.size() && is_name_char(value[end])) ++end;
+      std::string name(value.substr(i + 1, end - i - 1));
+      auto found = params_.find(name);
+      if (found == params_.end())
+        throw SceneError(where,
+                         "undefined parameter '$" + name + "' (define it with <default> or -D " + name + "=value)");
+      out += found->second;
+      i = end;
+    }
+    return out;
+  }
+
+  XmlNode convert(const pugi::xml_node& element, const FileContext& ctx, bool is_root) {
+    XmlNode node{element.name(), {}, {}, ctx.at(element)};
+    for (pugi::xml_attribute attribute : element.attributes())
+      node.attributes.emplace_back(attribute.name(), substitute(attribute.value(), node.where));
+    if (ctx.upgrade) upgrade_from_0x(node);
+    for (pugi::xml_node child : element.children()) {
+      if (child.type() != pugi::node_element) continue;
+      std::string_view tag = child.name();
+      if (tag == "default") {
+        if (!is_root) throw SceneError(ctx.at(child), "<default> must be a direct child of <scene>");
+      } else if (tag == "include") {
+        splice_include(child, ctx, node.children);
+      } else {
+        node.children.push_back(convert(child, ctx, /*is_root=*/false));
+      }
+    }
+    return node;
+  }
+
+  void splice_include(const pugi::xml_node& include, const FileContext& ctx, std::vector<XmlNode>& out) {
+    SourceLocation where = ctx.at(include);
+    pugi::xml_attribute filename = include.attribute("filename");
+    if (!filename) throw SceneError(where, "<include> needs a 'filename' attribute");
+    fs::path target = (ctx.path.parent_path() / substitute(filename.value(), where)).lexically_normal();
+
+    fs::path identity = identity_of(target);
+    auto open = std::find_if(open_files_.begin(), open_files_.end(),
+                             [&](const auto& entry) { return entry.first == identity; });
+    if (open != open_files_.end()) {
+      std::string chain;
+      for (auto it = open; it != open_files_.end(); ++it) chain += it->second + " -> ";
+      throw SceneError(where, "include cycle: " + chain + target.string());
+    }
+
+    XmlNode included = read_file(target, where, "included file");
+    for (XmlNode& child : included.children) out.push_back(std::move(child));
+  }
+
+  Defines params_;
+  std::vector<std::pair<fs::path, std::string>> open_files_;  // identity, name for messages
+};
+
+}  // namespace
+
+std::string camel_to_snake(std::string_view name) {
+  std::string out;
+  for (size_t i = 0; i < name.size(); ++i) {
+    char c = name[i];
+    if (is_upper(c) && i > 0) {
+      // A word starts at lower->Upper, and at the last capital of an acronym
+      // followed by a word ("IORValue" -> "ior_value"), so acronyms stay whole.
+      bool after_lower = is_lower(name[i - 1]);
+      bool ends_acronym = is_upper(name[i - 1]) && i + 1 < name.size() && is_lower(name[i + 1]);
+      if ((after_lower || ends_acronym) && out.back() != '_') out += '_';
+    }
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines) {
+  return Reader(defines).read_file(file, {file.string(), 0}, "scene file");
+}
+
+XmlNode read_scene_xml_string(std::string_view text, const std::filesystem::path& file_for_messages,
+                              const std::map<std::string, std::string>& defines) {
+  return Reader(defines).read_text(text, file_for_messages);
+}
+
+}  // namespace caustica

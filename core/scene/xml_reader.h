@@ -1,0 +1,26 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "core/scene/xml_node.h"
+
+namespace caustica {
+
+// Reads `file`, returns its root <scene> node after: includes spliced, defaults
+// and $name references resolved (with `defines` from -D taking precedence over
+// <default>), and files written for Mitsuba 0.x upgraded. Throws SceneError.
+XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines = {});
+
+// Same, from a string (file name used only for messages and to resolve includes
+// relative to its directory).
+XmlNode read_scene_xml_string(std::string_view text, const std::filesystem::path& file_for_messages,
+                              const std::map<std::string, std::string>& defines = {});
+
+// "toWorld" -> "to_world", "intIOR" -> "int_ior": the mechanical part of
+// upgrading Mitsuba 0.x parameter names.
+std::string camel_to_snake(std::string_view name);
+
+}  // namespace caustica

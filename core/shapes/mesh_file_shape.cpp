@@ -1,0 +1,90 @@
+// obj, ply: triangle meshes read from a file (through Assimp).
+//
+// Parameters
+//   filename          string     (required)  path, relative to the scene file
+//   face_normals      boolean    false       ignore the file's vertex normals
+//   flip_tex_coords   boolean    true (obj)  v -> 1 - v, as Mitsuba does for OBJ
+//   flip_normals      boolean    false
+//   to_world          transform  identity
+//
+// Polygons are triangulated. A mesh without vertex normals is shaded with
+// its face normals.
+//
+//   <shape type="obj">
+//       <string name="filename" value="meshes/bunny.obj"/>
+//   </shape>
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <filesystem>
+
+#include "core/registry/properties.h"
+#include "core/shapes/triangle_mesh.h"
+
+namespace caustica {
+namespace {
+
+MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
+  const std::filesystem::path file = props.get_path("filename");
+  if (!std::filesystem::is_regular_file(file))
+    throw props.error("filename", "mesh file '" + file.string() + "' not found");
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene) throw props.error("filename", "cannot read mesh file '" + file.string() + "': " + importer.GetErrorString());
+
+  MeshData mesh;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* in = scene->mMeshes[m];
+    if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    const auto base = uint32_t(mesh.positions.size());
+    for (unsigned v = 0; v < in->mNumVertices; ++v) {
+      mesh.positions.emplace_back(in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z);
+      if (in->HasNormals() && !face_normals)
+        mesh.normals.emplace_back(in->mNormals[v].x, in->mNormals[v].y, in->mNormals[v].z);
+      if (in->HasTextureCoords(0)) {
+        const aiVector3D t = in->mTextureCoords[0][v];
+        mesh.uvs.emplace_back(t.x, flip_tex_coords ? 1 - t.y : t.y);
+      }
+    }
+    for (unsigned f = 0; f < in->mNumFaces; ++f) {
+      if (in->mFaces[f].mNumIndices != 3) continue;
+      for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + in->mFaces[f].mIndices[k]);
+    }
+  }
+  // Attributes only some sub-meshes carry cannot be interpolated consistently.
+  if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
+  if (mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
+  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
+  return mesh;
+}
+
+std::vector<ParamSpec> file_params(const char* flip_default) {
+  auto params = mesh_shape_params();
+  params.push_back({"filename", ParamType::String, std::nullopt, "mesh file"});
+  params.push_back({"face_normals", ParamType::Boolean, "false", "use face normals"});
+  params.push_back({"flip_tex_coords", ParamType::Boolean, flip_default, "flip the v texture coordinate"});
+  return params;
+}
+
+class ObjShape final : public TriangleMesh {
+ public:
+  explicit ObjShape(const Properties& props)
+      : TriangleMesh(read_mesh_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
+                     "obj") {}
+};
+
+class PlyShape final : public TriangleMesh {
+ public:
+  explicit PlyShape(const Properties& props)
+      : TriangleMesh(read_mesh_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
+                     "ply") {}
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(ObjShape, "shape", "obj", file_params("true"), {"bsdf", "emitter"});
+CAUSTICA_REGISTER_PLUGIN(PlyShape, "shape", "ply", file_params("false"), {"bsdf", "emitter"});
+
+}  // namespace caustica

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <string>
+
+#include "core/geometry/bounds.h"
+#include "core/geometry/interaction.h"
+#include "core/registry/plugin.h"
+
+namespace caustica {
+
+class Bsdf;
+class Emitter;
+
+// A point sampled on a surface, with its density per unit area.
+struct PositionSample {
+  Vec3 p, p_error, n;
+  Vec2 uv;
+  float pdf = 0;
+};
+
+// The hit Embree reported, before the shape turns it into an interaction.
+struct RayHit {
+  float t = kInfinity;
+  unsigned prim = 0;
+  Vec2 uv;  // Embree's barycentrics for triangles, shape-defined otherwise
+};
+
+// A surface in the scene: Embree geometry plus what lights and integrators
+// need of it. Shapes are in world space once constructed.
+class Shape : public Plugin {
+ public:
+  // Adds the geometry to `scene` and returns its Embree id.
+  virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
+  virtual SurfaceInteraction interaction(const Ray& ray, const RayHit& hit) const = 0;
+  virtual float area() const = 0;
+  virtual Bounds3 bounds() const = 0;
+  virtual PositionSample sample_position(Vec2 u) const = 0;
+  virtual std::string kind() const = 0;
+
+  const std::shared_ptr<Bsdf>& bsdf() const { return bsdf_; }
+  const Emitter* emitter() const { return emitter_; }
+  void set_bsdf(std::shared_ptr<Bsdf> bsdf) { bsdf_ = std::move(bsdf); }
+  void set_emitter(const Emitter* e) { emitter_ = e; }
+
+ private:
+  std::shared_ptr<Bsdf> bsdf_;
+  const Emitter* emitter_ = nullptr;
+};
+
+}  // namespace caustica

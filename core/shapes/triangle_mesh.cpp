@@ -1,0 +1,98 @@
+#include "core/shapes/triangle_mesh.h"
+
+#include <stdexcept>
+
+#include "core/registry/properties.h"
+#include "core/sampling/warp.h"
+
+namespace caustica {
+
+std::vector<ParamSpec> mesh_shape_params() {
+  return {{"to_world", ParamType::Transform, "", "object-to-world transform"},
+          {"flip_normals", ParamType::Boolean, "false", "turn the surface inside out (emission side too)"}};
+}
+
+TriangleMesh::TriangleMesh(MeshData mesh, const Properties& props, std::string kind)
+    : TriangleMesh(std::move(mesh), props.get_transform("to_world"), props.get_bool("flip_normals"), std::move(kind)) {}
+
+TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_normals, std::string kind)
+    : mesh_(std::move(mesh)), flip_normals_(flip_normals), kind_(std::move(kind)) {
+  for (Vec3& p : mesh_.positions) p = to_world.point(p);
+  for (Vec3& n : mesh_.normals) n = normalize(to_world.normal(n));
+  std::vector<float> areas;
+  areas.reserve(triangle_count());
+  for (size_t i = 0; i < mesh_.indices.size(); i += 3) {
+    const Vec3 p0 = mesh_.positions[mesh_.indices[i]], p1 = mesh_.positions[mesh_.indices[i + 1]],
+               p2 = mesh_.positions[mesh_.indices[i + 2]];
+    areas.push_back(0.5f * length(cross(p1 - p0, p2 - p0)));
+    area_ += areas.back();
+  }
+  // A mesh of only degenerate triangles can still be hit-tested, but not sampled.
+  if (area_ > 0) area_distribution_.emplace(areas);
+}
+
+unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh_.positions.data(), 0,
+                             sizeof(Vec3), mesh_.positions.size());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh_.indices.data(), 0,
+                             3 * sizeof(uint32_t), triangle_count());
+  rtcCommitGeometry(geom);
+  const unsigned id = rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  return id;
+}
+
+Bounds3 TriangleMesh::bounds() const {
+  Bounds3 b;
+  for (const Vec3& p : mesh_.positions) b.expand(p);
+  return b;
+}
+
+SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const RayHit& hit) const {
+  const uint32_t i0 = mesh_.indices[3 * hit.prim], i1 = mesh_.indices[3 * hit.prim + 1],
+                 i2 = mesh_.indices[3 * hit.prim + 2];
+  const Vec3 p0 = mesh_.positions[i0], p1 = mesh_.positions[i1], p2 = mesh_.positions[i2];
+  const float b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1 - b1 - b2;
+
+  SurfaceInteraction si;
+  // The point is interpolated from the vertices rather than taken as o + t d:
+  // its error then depends only on the vertices, not on the ray's length.
+  // The bound has an isotropic part too: Embree intersects relative to the
+  // vertices, so a ray leaving a point exactly on an axis-aligned plane
+  // (where the interpolation is exact) still needs to clear Embree's own
+  // rounding, which scales with the vertex coordinates.
+  si.p = p0 * b0 + p1 * b1 + p2 * b2;
+  const float magnitude = max_component(max(max(abs(p0), abs(p1)), abs(p2)));
+  si.p_error = max((abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7), Vec3(1, 1, 1) * (magnitude * gamma(7)));
+  si.t = hit.t;
+  si.shape = this;
+  Vec3 ng = normalize(cross(p1 - p0, p2 - p0));
+  if (flip_normals_) ng = -ng;
+  Vec3 ns = ng;
+  if (!mesh_.normals.empty()) {
+    const Vec3 interpolated = mesh_.normals[i0] * b0 + mesh_.normals[i1] * b1 + mesh_.normals[i2] * b2;
+    if (squared_length(interpolated) > 0) {
+      ns = normalize(interpolated);
+      if (flip_normals_) ns = -ns;
+      ng = face_forward(ng, ns);
+    }
+  }
+  si.ng = ng;
+  si.shading = Frame::from_normal(ns);
+  si.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[i0] * b0 + mesh_.uvs[i1] * b1 + mesh_.uvs[i2] * b2;
+  (void)ray;
+  return si;
+}
+
+PositionSample TriangleMesh::sample_position(Vec2 u) const {
+  if (!area_distribution_) return {};
+  float u_reused = 0;
+  const size_t tri = area_distribution_->sample(u.x, nullptr, &u_reused);
+  const Vec2 b = square_to_uniform_triangle({u_reused, u.y});
+  RayHit hit{0, unsigned(tri), {b.y, 1 - b.x - b.y}};
+  const SurfaceInteraction si = interaction(Ray{}, hit);
+  return {si.p, si.p_error, si.shading.n, si.uv, 1 / area_};
+}
+
+}  // namespace caustica

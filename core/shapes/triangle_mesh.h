@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/math/transform.h"
+#include "core/registry/param_spec.h"
+#include "core/sampling/discrete_distribution.h"
+#include "core/shapes/shape.h"
+
+namespace caustica {
+
+class Properties;
+
+// Mesh data in object space, as a file or a built-in shape provides it.
+struct MeshData {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // empty, or one per position
+  std::vector<Vec2> uvs;      // empty, or one per position
+  std::vector<uint32_t> indices;  // three per triangle
+};
+
+// Every shape made of triangles (obj, ply, rectangle, cube): stored in world
+// space, intersected by Embree, sampled uniformly by area.
+class TriangleMesh : public Shape {
+ public:
+  // Reads the parameters every mesh shape shares: to_world, flip_normals.
+  TriangleMesh(MeshData mesh, const Properties& props, std::string kind);
+  TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_normals, std::string kind);
+
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  SurfaceInteraction interaction(const Ray& ray, const RayHit& hit) const override;
+  float area() const override { return area_; }
+  Bounds3 bounds() const override;
+  PositionSample sample_position(Vec2 u) const override;
+  std::string kind() const override { return kind_; }
+  size_t triangle_count() const { return mesh_.indices.size() / 3; }
+
+ private:
+  MeshData mesh_;
+  bool flip_normals_;
+  std::string kind_;
+  float area_ = 0;
+  std::optional<DiscreteDistribution> area_distribution_;
+};
+
+// The parameters of TriangleMesh, for plugins to list with their own.
+std::vector<ParamSpec> mesh_shape_params();
+
+}  // namespace caustica

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "core/math/color.h"
+#include "core/math/vec.h"
+#include "core/registry/plugin.h"
+
+namespace caustica {
+
+// A colour that varies over a surface's (u, v) parametrisation.
+class Texture : public Plugin {
+ public:
+  virtual Color eval(Vec2 uv) const = 0;
+  virtual Color mean() const = 0;
+};
+
+// What an rgb, spectrum or float value stands for where a texture is accepted.
+class ConstantTexture final : public Texture {
+ public:
+  explicit ConstantTexture(Color c) : c_(c) {}
+  Color eval(Vec2) const override { return c_; }
+  Color mean() const override { return c_; }
+
+ private:
+  Color c_;
+};
+
+}  // namespace caustica

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages caustica builds against. Idempotent: packages
+# already present are left alone, so a second run costs only a dpkg query.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config clang-format
+  libembree-dev libtbb-dev
+  libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
+  libopencolorio-dev opencolorio-tools
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libcli11-dev libpugixml-dev libassimp-dev libfmt-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/film/film_buffer.h"
+#include "core/render/renderer.h"
+#include "core/scene/scene_loader.h"
+
+namespace caustica::test {
+
+// A scene from XML text; `name` stands for the file in error messages.
+std::unique_ptr<Scene> scene_from_xml(const std::string& xml, const std::string& name = "test.xml");
+
+// Renders the scene's integrator into a fresh film buffer.
+FilmBuffer render_scene(const Scene& scene, uint32_t spp, uint64_t seed = 0, int threads = 0);
+
+// The message of the SceneError (or other exception) loading `xml` throws,
+// or "" if it loads.
+std::string load_error(const std::string& xml, const std::string& name = "test.xml");
+
+}  // namespace caustica::test
