@@ -39,9 +39,12 @@ std::vector<Aov> parse_aovs(const Properties& props) {
     const size_t colon = item.find(':');
     if (colon == std::string::npos || colon == 0) throw props.error("aovs", "'" + item + "' is not name:kind");
     const std::string kind = item.substr(colon + 1);
-    static const std::pair<const char*, AovKind> kinds[] = {{"albedo", AovKind::Albedo},     {"sh_normal", AovKind::ShNormal},
-                                                            {"geo_normal", AovKind::GeoNormal}, {"position", AovKind::Position},
-                                                            {"uv", AovKind::Uv},             {"depth", AovKind::Depth}};
+    static const std::pair<const char*, AovKind> kinds[] = {{"albedo", AovKind::Albedo},
+                                                            {"sh_normal", AovKind::ShNormal},
+                                                            {"geo_normal", AovKind::GeoNormal},
+                                                            {"position", AovKind::Position},
+                                                            {"uv", AovKind::Uv},
+                                                            {"depth", AovKind::Depth}};
     bool found = false;
     for (const auto& [k, v] : kinds)
       if (kind == k) {
@@ -49,7 +52,8 @@ std::vector<Aov> parse_aovs(const Properties& props) {
         found = true;
       }
     if (!found)
-      throw props.error("aovs", "unknown kind '" + kind + "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth)");
+      throw props.error("aovs",
+                        "unknown kind '" + kind + "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth)");
     start = end + 1;
   }
   return out;
@@ -64,12 +68,20 @@ class AovIntegrator final : public Integrator {
     for (const Aov& a : aovs_) {
       const char* suffixes = "";
       switch (a.kind) {
-        case AovKind::Albedo: suffixes = "RGB"; break;
+        case AovKind::Albedo:
+          suffixes = "RGB";
+          break;
         case AovKind::ShNormal:
         case AovKind::GeoNormal:
-        case AovKind::Position: suffixes = "XYZ"; break;
-        case AovKind::Uv: suffixes = "UV"; break;
-        case AovKind::Depth: suffixes = "T"; break;
+        case AovKind::Position:
+          suffixes = "XYZ";
+          break;
+        case AovKind::Uv:
+          suffixes = "UV";
+          break;
+        case AovKind::Depth:
+          suffixes = "T";
+          break;
       }
       for (const char* c = suffixes; *c; ++c) out.push_back(a.name + "." + *c);
     }
@@ -91,11 +103,21 @@ class AovIntegrator final : public Integrator {
           put({albedo.r, albedo.g, albedo.b}, 3);
           break;
         }
-        case AovKind::ShNormal: put(si->shading.n, 3); break;
-        case AovKind::GeoNormal: put(si->ng, 3); break;
-        case AovKind::Position: put(si->p, 3); break;
-        case AovKind::Uv: put({si->uv.x, si->uv.y, 0}, 2); break;
-        case AovKind::Depth: put({si->t, 0, 0}, 1); break;
+        case AovKind::ShNormal:
+          put(si->shading.n, 3);
+          break;
+        case AovKind::GeoNormal:
+          put(si->ng, 3);
+          break;
+        case AovKind::Position:
+          put(si->p, 3);
+          break;
+        case AovKind::Uv:
+          put({si->uv.x, si->uv.y, 0}, 2);
+          break;
+        case AovKind::Depth:
+          put({si->t, 0, 0}, 1);
+          break;
       }
     }
   }

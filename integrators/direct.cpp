@@ -30,7 +30,8 @@ class DirectIntegrator final : public RadianceIntegrator {
       : emitter_samples_(count(props, "emitter_samples")),
         bsdf_samples_(count(props, "bsdf_samples")),
         hide_emitters_(props.get_bool("hide_emitters")) {
-    if (emitter_samples_ + bsdf_samples_ == 0) throw props.error("bsdf_samples", "emitter_samples + bsdf_samples must be positive");
+    if (emitter_samples_ + bsdf_samples_ == 0)
+      throw props.error("bsdf_samples", "emitter_samples + bsdf_samples must be positive");
   }
 
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
@@ -61,8 +62,9 @@ class DirectIntegrator final : public RadianceIntegrator {
       const auto hit = scene.intersect(next);
       if (!hit) {
         for (const Emitter* env : scene.infinite_emitters()) {
-          const float w =
-              bs->is_delta() ? 1 : bsdf_sample_mis_weight(scene, *env, *si, bs->wi, bs->pdf, SurfaceInteraction{}, nl, nb);
+          const float w = bs->is_delta()
+                              ? 1
+                              : bsdf_sample_mis_weight(scene, *env, *si, bs->wi, bs->pdf, SurfaceInteraction{}, nl, nb);
           L += weight * env->Le_infinite(bs->wi) * w;
         }
         continue;

@@ -52,7 +52,8 @@ class PathIntegrator final : public RadianceIntegrator {
         for (const Emitter* env : scene.infinite_emitters()) {
           const Color Le = env->Le_infinite(ray.d);
           if (!show || Le.is_black()) continue;
-          const float w = specular ? 1 : bsdf_sample_mis_weight(scene, *env, prev, ray.d, prev_pdf, SurfaceInteraction{});
+          const float w =
+              specular ? 1 : bsdf_sample_mis_weight(scene, *env, prev, ray.d, prev_pdf, SurfaceInteraction{});
           L += beta * Le * w;
         }
         break;
@@ -93,8 +94,8 @@ class PathIntegrator final : public RadianceIntegrator {
 
   std::string describe() const override {
     return "path max_depth=" + std::to_string(max_depth_) + " rr_depth=" + std::to_string(rr_depth_) +
-           " rr_max_survival=" + std::to_string(rr_max_survival_) + " hide_emitters=" +
-           (hide_emitters_ ? "true" : "false");
+           " rr_max_survival=" + std::to_string(rr_max_survival_) +
+           " hide_emitters=" + (hide_emitters_ ? "true" : "false");
   }
 
  private:

@@ -22,8 +22,8 @@ class TwoSidedBsdf final : public Bsdf {
   explicit TwoSidedBsdf(const Properties& props) {
     auto nested = props.children<Bsdf>("bsdf");
     if (nested.empty() || nested.size() > 2)
-      throw SceneError(props.where(), "bsdf 'twosided' takes one or two nested bsdfs, found " +
-                                          std::to_string(nested.size()));
+      throw SceneError(props.where(),
+                       "bsdf 'twosided' takes one or two nested bsdfs, found " + std::to_string(nested.size()));
     front_ = nested.front();
     back_ = nested.back();
     if ((front_->lobes() | back_->lobes()) & kTransmission)

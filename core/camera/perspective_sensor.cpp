@@ -122,7 +122,8 @@ class PerspectiveSensor final : public Sensor {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PerspectiveSensor, "sensor", "perspective",
-                         {{"fov", ParamType::Float, "39.597755", "field of view in degrees (a 50 mm lens on 35 mm film)"},
+                         {{"fov", ParamType::Float, "39.597755",
+                           "field of view in degrees (a 50 mm lens on 35 mm film)"},
                           {"fov_axis", ParamType::String, "x", "axis the fov applies to"},
                           {"near_clip", ParamType::Float, "0.01", "near plane distance"},
                           {"far_clip", ParamType::Float, "10000", "far plane distance"},

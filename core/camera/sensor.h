@@ -19,7 +19,7 @@ struct WiSample {
   Color We;       // importance carried along -wi
   float pdf = 0;  // solid angle density at the reference point
   Vec3 p_lens;
-  Vec2 raster;    // where the connection lands on the film, in pixels
+  Vec2 raster;  // where the connection lands on the film, in pixels
 };
 
 // A camera. Raster coordinates run over [0, width] x [0, height] in pixels,

@@ -72,7 +72,8 @@ int RenderCommand::run() const {
 
   std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
   if (exr.extension() != ".exr") throw std::invalid_argument("output must end in .exr: " + exr.string());
-  const DisplayTransform display(ocio_config_.empty() ? default_ocio_config() : std::filesystem::path(ocio_config_), display_, view_);
+  const DisplayTransform display(ocio_config_.empty() ? default_ocio_config() : std::filesystem::path(ocio_config_),
+                                 display_, view_);
 
   RenderOptions options;
   options.spp = spp_;
@@ -93,13 +94,12 @@ int RenderCommand::run() const {
   if (tty && !quiet_) std::fprintf(stderr, "\n");
 
   Image image{film.width(), film.height(), film.channels(), film.resolve()};
-  const std::map<std::string, std::string> metadata = {
-      {"caustica:scene", scene_},
-      {"caustica:integrator", scene->integrator()->describe()},
-      {"caustica:spp", std::to_string(stats.spp)},
-      {"caustica:seconds", std::to_string(stats.seconds)},
-      {"caustica:seed", std::to_string(seed_)},
-      {"caustica:version", kVersion}};
+  const std::map<std::string, std::string> metadata = {{"caustica:scene", scene_},
+                                                       {"caustica:integrator", scene->integrator()->describe()},
+                                                       {"caustica:spp", std::to_string(stats.spp)},
+                                                       {"caustica:seconds", std::to_string(stats.seconds)},
+                                                       {"caustica:seed", std::to_string(seed_)},
+                                                       {"caustica:version", kVersion}};
   write_exr(exr, image, metadata, film_settings.half_float());
 
   std::vector<float> rgb(size_t(image.width) * image.height * 3);
@@ -112,10 +112,11 @@ int RenderCommand::run() const {
   write_png8(png, image.width, image.height, rgb);
 
   if (!quiet_) {
-    std::printf("%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped -> %s, %s\n",
-                scene_.c_str(), scene->integrator()->describe().c_str(), film.width(), film.height(), stats.spp,
-                stats.seconds, stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6,
-                static_cast<unsigned long long>(stats.dropped), exr.c_str(), png.c_str());
+    std::printf(
+        "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped -> %s, %s\n",
+        scene_.c_str(), scene->integrator()->describe().c_str(), film.width(), film.height(), stats.spp, stats.seconds,
+        stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6,
+        static_cast<unsigned long long>(stats.dropped), exr.c_str(), png.c_str());
   }
   if (stats.dropped > 0)
     std::fprintf(stderr, "caustica: warning: %llu non-finite samples were dropped; replay the first with:\n  %s\n",

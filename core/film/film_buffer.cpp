@@ -1,6 +1,8 @@
 #include "core/film/film_buffer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace caustica {
 
@@ -18,10 +20,10 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   bool finite = std::isfinite(weight);
   for (float v : values) finite = finite && std::isfinite(v);
   if (!finite) {
-    dropped_.fetch_add(1);
-    std::lock_guard lock(dropped_mutex_);
+    dropped_->count.fetch_add(1);
+    std::lock_guard lock(dropped_->mutex);
     const auto key = [](SampleId s) { return std::tuple(s.pixel.y, s.pixel.x, s.index); };
-    if (first_dropped_.pixel.x < 0 || key(id) < key(first_dropped_)) first_dropped_ = id;
+    if (dropped_->first.pixel.x < 0 || key(id) < key(dropped_->first)) dropped_->first = id;
     return;
   }
   const size_t p = index(id.pixel);
@@ -55,8 +57,8 @@ std::vector<float> FilmBuffer::variance() const {
 }
 
 SampleId FilmBuffer::first_dropped() const {
-  std::lock_guard lock(dropped_mutex_);
-  return first_dropped_;
+  std::lock_guard lock(dropped_->mutex);
+  return dropped_->first;
 }
 
 }  // namespace caustica

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <string>
@@ -40,7 +41,7 @@ class FilmBuffer {
   std::vector<float> variance() const;
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
 
-  uint64_t dropped_samples() const { return dropped_.load(); }
+  uint64_t dropped_samples() const { return dropped_->count.load(); }
   // The first dropped sample (lowest pixel, then index), if any.
   SampleId first_dropped() const;
 
@@ -53,9 +54,12 @@ class FilmBuffer {
   std::vector<double> weight_sum_;
   std::vector<double> mean_, m2_;  // Welford state, three per pixel
   std::vector<uint32_t> count_;
-  std::atomic<uint64_t> dropped_{0};
-  mutable std::mutex dropped_mutex_;
-  SampleId first_dropped_{{-1, -1}, 0};
+  struct DropLog {
+    std::atomic<uint64_t> count{0};
+    std::mutex mutex;
+    SampleId first{{-1, -1}, 0};
+  };
+  std::unique_ptr<DropLog> dropped_ = std::make_unique<DropLog>();
 };
 
 }  // namespace caustica

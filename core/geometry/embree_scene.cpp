@@ -26,8 +26,9 @@ RTCRay to_rtc(const Ray& ray) {
 
 EmbreeScene::EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes) {
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw std::runtime_error("cannot create an Embree device (error " +
-                                         std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+  if (!device_)
+    throw std::runtime_error("cannot create an Embree device (error " +
+                             std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
   scene_ = rtcNewScene(device_);
   // Robust mode makes the triangle test watertight and conservative, which
   // the floating-point error bounds of the hit points rely on.

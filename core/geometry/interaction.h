@@ -11,8 +11,8 @@ class Shape;
 // A point on a surface as the integrators see it.
 struct SurfaceInteraction {
   Vec3 p;
-  Vec3 p_error;  // conservative bound on |p - exact hit point| per axis
-  Vec3 ng;       // geometric normal, unit length, on the shape's outward side
+  Vec3 p_error;   // conservative bound on |p - exact hit point| per axis
+  Vec3 ng;        // geometric normal, unit length, on the shape's outward side
   Frame shading;  // shading frame; shading.n lies on ng's side
   Vec2 uv;
   float t = kInfinity;

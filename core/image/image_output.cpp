@@ -23,8 +23,8 @@ void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& s
 
 }  // namespace
 
-void write_exr(const std::filesystem::path& path, const Image& image, const std::map<std::string, std::string>& metadata,
-               bool half_float) {
+void write_exr(const std::filesystem::path& path, const Image& image,
+               const std::map<std::string, std::string>& metadata, bool half_float) {
   OIIO::ImageSpec spec(image.width, image.height, int(image.channels.size()),
                        half_float ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
   spec.channelnames = image.channels;
@@ -43,9 +43,8 @@ void write_png8(const std::filesystem::path& path, int width, int height, const 
     bytes[i] = uint8_t(std::lround(v * 255));
   }
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data());
-  });
+  write_atomically(
+      path, [&](const std::filesystem::path& tmp) { write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data()); });
 }
 
 }  // namespace caustica

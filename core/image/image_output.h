@@ -15,8 +15,8 @@ struct Image {
 };
 
 // Writes a linear OpenEXR file (float or half) with string metadata; atomic.
-void write_exr(const std::filesystem::path& path, const Image& image, const std::map<std::string, std::string>& metadata,
-               bool half_float);
+void write_exr(const std::filesystem::path& path, const Image& image,
+               const std::map<std::string, std::string>& metadata, bool half_float);
 
 // Writes display-referred 8-bit RGB (values in [0, 1] after the display
 // transform; clamped here) to a PNG; atomic.

@@ -59,8 +59,8 @@ class AreaEmitter final : public Emitter {
     const float pdf_dir = cosine_hemisphere_pdf(local.z);
     if (pdf_dir <= 0) return std::nullopt;
     const Vec3 d = Frame::from_normal(ps.n).to_world(local);
-    return LeSample{{offset_ray_origin(ps.p, ps.p_error, ps.n, d), d, kInfinity}, ps.n, radiance_, ps.pdf, pdf_dir,
-                    false};
+    return LeSample{
+        {offset_ray_origin(ps.p, ps.p_error, ps.n, d), d, kInfinity}, ps.n, radiance_, ps.pdf, pdf_dir, false};
   }
 
   void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const override {
@@ -78,7 +78,6 @@ class AreaEmitter final : public Emitter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}}, {});
 
 }  // namespace caustica

@@ -42,7 +42,9 @@ class Emitter : public Plugin {
   // Called once the scene's extent is known (the environment needs it).
   virtual void prepare(const Bounds3&) {}
   // Only area emitters can be nested in a shape; the others refuse.
-  virtual void attach_shape(const Shape*) { throw std::invalid_argument("only an area emitter can be nested in a shape"); }
+  virtual void attach_shape(const Shape*) {
+    throw std::invalid_argument("only an area emitter can be nested in a shape");
+  }
   virtual bool is_area() const { return false; }
 
   virtual std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const = 0;

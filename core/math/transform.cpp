@@ -73,7 +73,9 @@ Transform Transform::translate(Vec3 d) {
   return {m, inv};
 }
 
-Transform Transform::scale(Vec3 s) { return Transform(Matrix4{{{{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}}}}); }
+Transform Transform::scale(Vec3 s) {
+  return Transform(Matrix4{{{{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}}}});
+}
 
 Transform Transform::rotate(Vec3 axis, float degrees) {
   const Vec3 a = normalize(axis);
@@ -93,6 +95,7 @@ Transform Transform::rotate(Vec3 axis, float degrees) {
 }
 
 Transform Transform::look_at(Vec3 origin, Vec3 target, Vec3 up) {
+  if (target == origin) throw std::invalid_argument("lookat: origin and target coincide");
   const Vec3 dir = normalize(target - origin);
   const Vec3 left = cross(normalize(up), dir);
   if (squared_length(left) == 0) throw std::invalid_argument("lookat: 'up' is parallel to the viewing direction");

@@ -40,9 +40,7 @@ struct Vec3 {
 
 constexpr Vec3 operator*(float s, Vec3 v) { return v * s; }
 constexpr float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-constexpr Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+constexpr Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline float abs_dot(Vec3 a, Vec3 b) { return std::abs(dot(a, b)); }
 constexpr float squared_length(Vec3 v) { return dot(v, v); }
 inline float length(Vec3 v) { return std::sqrt(dot(v, v)); }

@@ -22,8 +22,8 @@ void Properties::set(const std::string& name, PropertyValue value) {
   if (!spec) {
     std::vector<std::string> accepted;
     for (const auto& p : info_->params) accepted.push_back(p.name);
-    throw SceneError(value.where,
-                     "unknown parameter '" + name + "' for " + plugin_name(*info_) + " (accepted: " + join(accepted) + ")");
+    throw SceneError(value.where, "unknown parameter '" + name + "' for " + plugin_name(*info_) +
+                                      " (accepted: " + join(accepted) + ")");
   }
   const std::string category =
       value.kind == ValueKind::Object ? std::get<ObjectValue>(value.value).category : std::string();
@@ -92,15 +92,20 @@ namespace {
 
 Color as_color(const PropertyValue& v) {
   switch (v.kind) {
-    case ValueKind::Integer: return Color(float(std::get<int64_t>(v.value)));
-    case ValueKind::Float: return Color(float(std::get<double>(v.value)));
-    default: return std::get<Color>(v.value);
+    case ValueKind::Integer:
+      return Color(float(std::get<int64_t>(v.value)));
+    case ValueKind::Float:
+      return Color(float(std::get<double>(v.value)));
+    default:
+      return std::get<Color>(v.value);
   }
 }
 
 }  // namespace
 
-Color Properties::get_color(const std::string& name) const { return as_color(value_or_default(name, ParamType::Color)); }
+Color Properties::get_color(const std::string& name) const {
+  return as_color(value_or_default(name, ParamType::Color));
+}
 
 Vec3 Properties::get_point(const std::string& name) const {
   return std::get<Vec3>(value_or_default(name, ParamType::Point).value);

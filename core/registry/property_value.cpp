@@ -8,15 +8,24 @@ namespace caustica {
 
 const char* to_string(ValueKind k) {
   switch (k) {
-    case ValueKind::Boolean: return "boolean";
-    case ValueKind::Integer: return "integer";
-    case ValueKind::Float: return "float";
-    case ValueKind::String: return "string";
-    case ValueKind::Rgb: return "rgb";
-    case ValueKind::Point: return "point";
-    case ValueKind::Vector: return "vector";
-    case ValueKind::Transform: return "transform";
-    case ValueKind::Object: return "object";
+    case ValueKind::Boolean:
+      return "boolean";
+    case ValueKind::Integer:
+      return "integer";
+    case ValueKind::Float:
+      return "float";
+    case ValueKind::String:
+      return "string";
+    case ValueKind::Rgb:
+      return "rgb";
+    case ValueKind::Point:
+      return "point";
+    case ValueKind::Vector:
+      return "vector";
+    case ValueKind::Transform:
+      return "transform";
+    case ValueKind::Object:
+      return "object";
   }
   return "?";
 }
@@ -68,7 +77,9 @@ PropertyValue parse_value_text(ValueKind kind, const std::string& text, const So
       v.value = n[0];
       break;
     }
-    case ValueKind::String: v.value = text; break;
+    case ValueKind::String:
+      v.value = text;
+      break;
     case ValueKind::Rgb: {
       const auto n = parse_numbers(text, where, "rgb");
       if (n.size() == 1)
@@ -91,39 +102,56 @@ PropertyValue parse_value_text(ValueKind kind, const std::string& text, const So
       if (!text.empty()) throw SceneError(where, "a transform default must be empty (identity)");
       v.value = Transform();
       break;
-    case ValueKind::Object: throw SceneError(where, "an object has no text form");
+    case ValueKind::Object:
+      throw SceneError(where, "an object has no text form");
   }
   return v;
 }
 
 bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_category) {
   switch (wanted) {
-    case ParamType::Boolean: return given == ValueKind::Boolean;
-    case ParamType::Integer: return given == ValueKind::Integer;
-    case ParamType::Float: return given == ValueKind::Float || given == ValueKind::Integer;
-    case ParamType::String: return given == ValueKind::String;
-    case ParamType::Color: return given == ValueKind::Rgb || given == ValueKind::Float || given == ValueKind::Integer;
+    case ParamType::Boolean:
+      return given == ValueKind::Boolean;
+    case ParamType::Integer:
+      return given == ValueKind::Integer;
+    case ParamType::Float:
+      return given == ValueKind::Float || given == ValueKind::Integer;
+    case ParamType::String:
+      return given == ValueKind::String;
+    case ParamType::Color:
+      return given == ValueKind::Rgb || given == ValueKind::Float || given == ValueKind::Integer;
     case ParamType::Texture:
       return given == ValueKind::Rgb || given == ValueKind::Float || given == ValueKind::Integer ||
              (given == ValueKind::Object && object_category == "texture");
-    case ParamType::Point: return given == ValueKind::Point;
-    case ParamType::Vector: return given == ValueKind::Vector || given == ValueKind::Point;
-    case ParamType::Transform: return given == ValueKind::Transform;
+    case ParamType::Point:
+      return given == ValueKind::Point;
+    case ParamType::Vector:
+      return given == ValueKind::Vector || given == ValueKind::Point;
+    case ParamType::Transform:
+      return given == ValueKind::Transform;
   }
   return false;
 }
 
 ValueKind default_kind(ParamType t) {
   switch (t) {
-    case ParamType::Boolean: return ValueKind::Boolean;
-    case ParamType::Integer: return ValueKind::Integer;
-    case ParamType::Float: return ValueKind::Float;
-    case ParamType::String: return ValueKind::String;
+    case ParamType::Boolean:
+      return ValueKind::Boolean;
+    case ParamType::Integer:
+      return ValueKind::Integer;
+    case ParamType::Float:
+      return ValueKind::Float;
+    case ParamType::String:
+      return ValueKind::String;
     case ParamType::Color:
-    case ParamType::Texture: return ValueKind::Rgb;
-    case ParamType::Point: return ValueKind::Point;
-    case ParamType::Vector: return ValueKind::Vector;
-    case ParamType::Transform: return ValueKind::Transform;
+    case ParamType::Texture:
+      return ValueKind::Rgb;
+    case ParamType::Point:
+      return ValueKind::Point;
+    case ParamType::Vector:
+      return ValueKind::Vector;
+    case ParamType::Transform:
+      return ValueKind::Transform;
   }
   return ValueKind::Float;
 }

@@ -6,15 +6,24 @@ namespace caustica {
 
 const char* to_string(ParamType t) {
   switch (t) {
-    case ParamType::Boolean: return "boolean";
-    case ParamType::Integer: return "integer";
-    case ParamType::Float: return "float";
-    case ParamType::String: return "string";
-    case ParamType::Color: return "rgb";
-    case ParamType::Texture: return "texture";
-    case ParamType::Point: return "point";
-    case ParamType::Vector: return "vector";
-    case ParamType::Transform: return "transform";
+    case ParamType::Boolean:
+      return "boolean";
+    case ParamType::Integer:
+      return "integer";
+    case ParamType::Float:
+      return "float";
+    case ParamType::String:
+      return "string";
+    case ParamType::Color:
+      return "rgb";
+    case ParamType::Texture:
+      return "texture";
+    case ParamType::Point:
+      return "point";
+    case ParamType::Vector:
+      return "vector";
+    case ParamType::Transform:
+      return "transform";
   }
   return "?";
 }

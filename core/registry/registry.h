@@ -40,9 +40,9 @@ class Registry {
 
 // Registers a plugin from its own translation unit:
 //   CAUSTICA_REGISTER_PLUGIN(DiffuseBsdf, "bsdf", "diffuse", {{params...}}, {child categories});
-#define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                           \
-  [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add( \
-      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {     \
+#define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                               \
+  [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add(   \
+      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {        \
                                return std::shared_ptr<::caustica::Plugin>(std::make_shared<Class>(props)); \
                              }})
 

@@ -20,7 +20,6 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
 // The MIS weight of a BSDF-sampled direction that reached `emitter` at
 // `on_light` (or the environment), from the point `from`.
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const SurfaceInteraction& from, Vec3 wi,
-                             float bsdf_pdf, const SurfaceInteraction& on_light, float n_light = 1,
-                             float n_bsdf = 1);
+                             float bsdf_pdf, const SurfaceInteraction& on_light, float n_light = 1, float n_bsdf = 1);
 
 }  // namespace caustica

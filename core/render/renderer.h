@@ -12,10 +12,10 @@
 namespace caustica {
 
 struct RenderOptions {
-  uint32_t spp = 0;           // 0: the scene sampler's sample_count
-  double time_limit = 0;      // seconds; when positive, render passes until it is spent
+  uint32_t spp = 0;       // 0: the scene sampler's sample_count
+  double time_limit = 0;  // seconds; when positive, render passes until it is spent
   uint64_t seed = 0;
-  int threads = 0;            // 0: all cores
+  int threads = 0;  // 0: all cores
 };
 
 struct RenderProgress {

@@ -13,10 +13,10 @@ namespace {
 
 const std::set<std::string> kObjectTags = {"integrator", "sensor", "film",    "sampler", "rfilter",
                                            "shape",      "bsdf",   "emitter", "texture"};
-const std::map<std::string, ValueKind> kValueTags = {
-    {"float", ValueKind::Float},  {"integer", ValueKind::Integer}, {"boolean", ValueKind::Boolean},
-    {"string", ValueKind::String}, {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
-    {"point", ValueKind::Point},  {"vector", ValueKind::Vector}};
+const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float},     {"integer", ValueKind::Integer},
+                                                     {"boolean", ValueKind::Boolean}, {"string", ValueKind::String},
+                                                     {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
+                                                     {"point", ValueKind::Point},     {"vector", ValueKind::Vector}};
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -98,8 +98,8 @@ class Instantiator {
     const std::string& type = required_attribute(node, "type");
     const PluginInfo* info = Registry::instance().find(node.tag, type);
     if (!info)
-      throw SceneError(node.where, "unknown " + node.tag + " type '" + type + "' (available: " +
-                                       join(Registry::instance().names(node.tag)) + ")");
+      throw SceneError(node.where, "unknown " + node.tag + " type '" + type +
+                                       "' (available: " + join(Registry::instance().names(node.tag)) + ")");
     Properties props(*info, node.where);
     for (const XmlNode& child : node.children) add_child(props, child);
 
@@ -186,7 +186,8 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
   }
   if (!integrator) integrator = make_default_integrator("path");
   for (const auto& e : inst.emitters)
-    if (e->is_area() && !std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->emitter() == e.get(); }))
+    if (e->is_area() &&
+        !std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->emitter() == e.get(); }))
       throw SceneError(root.where, "an area emitter is nested in a shape that is not part of the scene");
   return std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), std::move(integrator),
                                  source);
@@ -206,8 +207,8 @@ std::unique_ptr<Scene> load_scene_string(std::string_view xml, const std::filesy
 std::shared_ptr<Integrator> make_default_integrator(const std::string& name) {
   const PluginInfo* info = Registry::instance().find("integrator", name);
   if (!info)
-    throw std::invalid_argument("unknown integrator '" + name + "' (available: " +
-                                join(Registry::instance().names("integrator")) + ")");
+    throw std::invalid_argument("unknown integrator '" + name +
+                                "' (available: " + join(Registry::instance().names("integrator")) + ")");
   return std::static_pointer_cast<Integrator>(info->create(Properties(*info, {name, 0})));
 }
 

@@ -1,5 +1,7 @@
 #include "core/scene/transform_parser.h"
 
+#include <stdexcept>
+
 #include "core/registry/property_value.h"
 
 namespace caustica {
@@ -73,29 +75,28 @@ Transform parse_step(const XmlNode& step) {
     } else {
       throw SceneError(step.where, "<matrix> needs 16 (or 9) numbers, found " + std::to_string(values.size()));
     }
-    try {
-      return Transform(m);
-    } catch (const std::invalid_argument& e) {
-      throw SceneError(step.where, e.what());
-    }
+    return Transform(m);
   }
   if (step.tag == "lookat") {
     check_attributes(step, {"origin", "target", "up"});
     const Vec3 up = step.attribute("up") ? triple(step, "up") : Vec3(0, 1, 0);
-    try {
-      return Transform::look_at(triple(step, "origin"), triple(step, "target"), up);
-    } catch (const std::invalid_argument& e) {
-      throw SceneError(step.where, e.what());
-    }
+    return Transform::look_at(triple(step, "origin"), triple(step, "target"), up);
   }
-  throw SceneError(step.where, "unknown transform step <" + step.tag + "> (accepted: translate, rotate, scale, matrix, lookat)");
+  throw SceneError(step.where,
+                   "unknown transform step <" + step.tag + "> (accepted: translate, rotate, scale, matrix, lookat)");
 }
 
 }  // namespace
 
 Transform parse_transform(const XmlNode& node) {
   Transform t;
-  for (const XmlNode& step : node.children) t = parse_step(step) * t;
+  for (const XmlNode& step : node.children) {
+    try {
+      t = parse_step(step) * t;
+    } catch (const std::invalid_argument& e) {  // a singular matrix, a degenerate lookat
+      throw SceneError(step.where, e.what());
+    }
+  }
   return t;
 }
 

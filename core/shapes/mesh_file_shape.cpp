@@ -32,7 +32,8 @@ MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face
     throw props.error("filename", "mesh file '" + file.string() + "' not found");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
-  if (!scene) throw props.error("filename", "cannot read mesh file '" + file.string() + "': " + importer.GetErrorString());
+  if (!scene)
+    throw props.error("filename", "cannot read mesh file '" + file.string() + "': " + importer.GetErrorString());
 
   MeshData mesh;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {

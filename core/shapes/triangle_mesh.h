@@ -16,8 +16,8 @@ class Properties;
 // Mesh data in object space, as a file or a built-in shape provides it.
 struct MeshData {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;  // empty, or one per position
-  std::vector<Vec2> uvs;      // empty, or one per position
+  std::vector<Vec3> normals;      // empty, or one per position
+  std::vector<Vec2> uvs;          // empty, or one per position
   std::vector<uint32_t> indices;  // three per triangle
 };
 

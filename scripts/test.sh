@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Builds caustica and runs the whole test suite with ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/build.sh
+ctest --test-dir build --output-on-failure --timeout 1200 -j "$(nproc)"

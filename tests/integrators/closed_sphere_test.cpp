@@ -1,0 +1,97 @@
+// Inside a closed sphere whose inner surface emits Le and reflects diffusely
+// with albedo rho, every ray sees L = Le * sum_k rho^k: Le / (1 - rho) with
+// unlimited depth, the partial sum when max_depth cuts the series.
+//
+// Each case is a z-test of the image mean against that value, with the
+// standard error estimated from the per-pixel sample variances, at
+// significance 0.1% each (two-sided). Seeds are fixed, so the outcome is
+// deterministic.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/test_scenes.h"
+#include "tests/support/z_test.h"
+
+namespace caustica {
+namespace {
+
+const double kZCritical = test::two_sided_z_critical(0.001);
+
+std::string sphere_scene(const std::string& integrator, float Le, float rho) {
+  return "<scene version='3.0.0'>" + integrator +
+         "<sensor type='perspective'><float name='fov' value='70'/>"
+         "<transform name='to_world'><lookat origin='0.1, 0.2, 0' target='1, 0.3, 0.2'/></transform>"
+         "<film type='hdrfilm'><integer name='width' value='24'/><integer name='height' value='24'/>"
+         "<rfilter type='box'/></film></sensor>"
+         "<shape type='sphere'><float name='radius' value='1'/><boolean name='flip_normals' value='true'/>"
+         "<bsdf type='diffuse'><rgb name='reflectance' value='" +
+         std::to_string(rho) + "'/></bsdf><emitter type='area'><rgb name='radiance' value='" + std::to_string(Le) +
+         "'/></emitter></shape></scene>";
+}
+
+struct MeanEstimate {
+  double mean = 0, standard_error = 0;
+};
+
+// Mean of every channel of every pixel, and its standard error.
+MeanEstimate image_mean(const FilmBuffer& film) {
+  const auto img = film.resolve();
+  const auto var = film.variance();
+  double sum = 0, var_sum = 0;
+  for (size_t i = 0; i < img.size(); ++i) {
+    sum += img[i];
+    var_sum += var[i];
+  }
+  const double n = double(img.size());
+  return {sum / n, std::sqrt(var_sum) / n};
+}
+
+void expect_radiance(const std::string& integrator, double expected, uint32_t spp, uint64_t seed) {
+  const auto scene = test::scene_from_xml(sphere_scene(integrator, 1.0f, 0.5f));
+  const MeanEstimate m = image_mean(test::render_scene(*scene, spp, seed));
+  // Where the estimator has (almost) no variance, single-precision rounding
+  // dominates the error; it is allowed for as a relative 1e-5 spread.
+  const double rounding = 1e-5 * expected;
+  const double z = (m.mean - expected) / std::sqrt(m.standard_error * m.standard_error + rounding * rounding);
+  EXPECT_LT(std::abs(z), kZCritical) << integrator << ": mean " << m.mean << " +- " << m.standard_error << ", expected "
+                                     << expected;
+}
+
+TEST(ClosedSphere, PathWithRussianRouletteIsUnbiased) {
+  expect_radiance("<integrator type='path'><integer name='rr_depth' value='1'/></integrator>", 2.0, 64, 1);
+}
+
+TEST(ClosedSphere, PathWithDefaultRouletteIsUnbiased) { expect_radiance("<integrator type='path'/>", 2.0, 64, 2); }
+
+TEST(ClosedSphere, PathWithoutRouletteMatchesTheTruncatedSeries) {
+  // rr_depth beyond max_depth: no path ever meets Russian roulette.
+  const int depth = 12;
+  const double expected = (1 - std::pow(0.5, depth)) / (1 - 0.5);
+  expect_radiance(
+      "<integrator type='path'><integer name='max_depth' value='12'/>"
+      "<integer name='rr_depth' value='100'/></integrator>",
+      expected, 32, 3);
+}
+
+TEST(ClosedSphere, MaxDepthOneSeesOnlyEmission) {
+  const auto scene = test::scene_from_xml(
+      sphere_scene("<integrator type='path'><integer name='max_depth' value='1'/></integrator>", 1.0f, 0.5f));
+  for (float v : test::render_scene(*scene, 2).resolve()) EXPECT_FLOAT_EQ(v, 1.0f);
+}
+
+TEST(ClosedSphere, DirectSeesOneBounce) {
+  expect_radiance("<integrator type='direct'/>", 1.5, 32, 4);
+  expect_radiance("<integrator type='path'><integer name='max_depth' value='2'/></integrator>", 1.5, 32, 5);
+}
+
+// Radiance rises fast with albedo near 1, where Russian roulette matters most.
+TEST(ClosedSphere, HighAlbedoStaysUnbiased) {
+  const auto scene = test::scene_from_xml(sphere_scene("<integrator type='path'/>", 0.5f, 0.9f));
+  const MeanEstimate m = image_mean(test::render_scene(*scene, 64, 6));
+  EXPECT_LT(std::abs(m.mean - 5.0) / m.standard_error, kZCritical) << m.mean << " +- " << m.standard_error;
+}
+
+}  // namespace
+}  // namespace caustica

@@ -1,0 +1,197 @@
+#include "core/scene/scene_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/bsdf/bsdf.h"
+#include "tests/support/test_scenes.h"
+
+namespace caustica {
+namespace {
+
+using testing::HasSubstr;
+using testing::StartsWith;
+
+const std::string kCornellMeshes = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/meshes/cornell/";
+
+std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "caustica_scene_loader_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+TEST(SceneLoader, EveryElementOfTheSubset) {
+  const auto ply = write_temp("tri.ply",
+                              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const std::string xml = R"(<scene version="3.0.0">
+    <default name="w" value="32"/>
+    <integrator type="path">
+      <integer name="max_depth" value="$depth"/>
+      <boolean name="hide_emitters" value="true"/>
+    </integrator>
+    <sensor type="perspective">
+      <float name="fov" value="45"/>
+      <string name="fov_axis" value="y"/>
+      <transform name="to_world">
+        <lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/>
+      </transform>
+      <sampler type="independent"><integer name="sample_count" value="3"/></sampler>
+      <film type="hdrfilm">
+        <integer name="width" value="$w"/><integer name="height" value="24"/>
+        <string name="component_format" value="float32"/>
+        <rfilter type="tent"><float name="radius" value="1.5"/></rfilter>
+      </film>
+    </sensor>
+    <bsdf type="diffuse" id="grey"><spectrum name="reflectance" value="0.4"/></bsdf>
+    <bsdf type="twosided" id="sheet"><bsdf type="diffuse"><rgb name="reflectance" value="0.1, 0.2, 0.3"/></bsdf></bsdf>
+    <shape type="obj">
+      <string name="filename" value=")" +
+                          kCornellMeshes + R"(floor.obj"/>
+      <transform name="to_world"><scale value="0.001"/><rotate y="1" angle="30"/><translate x="1"/></transform>
+      <ref id="grey"/>
+    </shape>
+    <shape type="ply"><string name="filename" value=")" +
+                          ply.string() + R"("/><ref id="sheet"/></shape>
+    <shape type="rectangle">
+      <transform name="to_world"><matrix value="1 0 0 0  0 1 0 2  0 0 1 0  0 0 0 1"/></transform>
+      <emitter type="area"><rgb name="radiance" value="1, 2, 3"/></emitter>
+    </shape>
+    <shape type="cube"><ref id="grey"/></shape>
+    <shape type="sphere"><point name="center" x="0" y="3" z="0"/><float name="radius" value="0.5"/></shape>
+    <shape type="disk"><boolean name="flip_normals" value="true"/></shape>
+    <emitter type="point"><point name="position" value="0, 4, 0"/><rgb name="intensity" value="5"/></emitter>
+    <emitter type="constant"><rgb name="radiance" value="0.1"/></emitter>
+  </scene>)";
+  const auto scene = load_scene_string(xml, "all.xml", {{"depth", "7"}});
+  EXPECT_EQ(scene->shapes().size(), 6u);
+  EXPECT_EQ(scene->emitters().size(), 3u);
+  EXPECT_EQ(scene->infinite_emitters().size(), 1u);
+  EXPECT_EQ(scene->sensor().film()->width(), 32);
+  EXPECT_EQ(scene->sensor().film()->height(), 24);
+  EXPECT_FALSE(scene->sensor().film()->half_float());
+  EXPECT_FLOAT_EQ(scene->sensor().film()->filter().radius(), 1.5f);
+  EXPECT_EQ(scene->sensor().sampler()->sample_count(), 3u);
+  EXPECT_EQ(scene->integrator()->describe(), "path max_depth=7 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
+  EXPECT_EQ(scene->shapes()[0]->bsdf(), scene->shapes()[3]->bsdf());  // one object through ref
+  EXPECT_EQ(scene->shapes()[1]->bsdf()->lobes(), kDiffuseReflection);
+  EXPECT_NE(scene->shapes()[2]->emitter(), nullptr);
+  // The floor's centre (0.2764, 0, 0.2796) after the scale, a rotation by 30
+  // degrees about y and the move along x.
+  const auto hit = scene->intersect({{1.3792f, 1, 0.1039f}, {0, -1, 0}});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 1, 1e-5f);
+}
+
+TEST(SceneLoader, DefaultsGiveAPerspectiveCameraAndPathTracer) {
+  const auto scene = load_scene_string("<scene version='3.0.0'/>", "empty.xml");
+  EXPECT_EQ(scene->sensor().film()->width(), 768);
+  EXPECT_THAT(scene->integrator()->describe(), StartsWith("path max_depth=-1"));
+}
+
+TEST(SceneLoader, ZeroPointSixSceneIsUpgraded) {
+  const auto scene = load_scene_string(
+      "<scene version='0.6.0'><integrator type='path'><integer name='maxDepth' value='3'/></integrator>"
+      "<shape type='sphere'><transform name='toWorld'><translate x='1'/></transform></shape></scene>",
+      "old.xml");
+  EXPECT_THAT(scene->integrator()->describe(), StartsWith("path max_depth=3"));
+}
+
+struct BadInput {
+  const char* what;
+  std::string xml;
+  std::string message;
+};
+
+class SceneLoaderError : public testing::TestWithParam<BadInput> {};
+
+TEST_P(SceneLoaderError, NamesFileLineAndProblem) {
+  EXPECT_THAT(test::load_error(GetParam().xml, "bad.xml"), HasSubstr(GetParam().message)) << GetParam().what;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInputs, SceneLoaderError,
+    testing::Values(
+        BadInput{"malformed XML", "<scene version='3.0.0'>\n<shape type='sphere'>\n</scene>",
+                 "bad.xml:3: malformed XML"},
+        BadInput{"unknown plugin", "<scene version='3.0.0'>\n<bsdf type='velvet'/></scene>",
+                 "bad.xml:2: unknown bsdf type 'velvet' (available: diffuse, twosided"},
+        BadInput{"unknown parameter",
+                 "<scene version='3.0.0'>\n<shape type='sphere'>\n<float name='radius' value='1'/>\n"
+                 "<float name='radios' value='1'/></shape></scene>",
+                 "bad.xml:4: unknown parameter 'radios' for shape 'sphere' (accepted: center, radius, to_world, "
+                 "flip_normals)"},
+        BadInput{"wrong value type",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'>\n<string name='fov' value='wide'/>"
+                 "</sensor></scene>",
+                 "bad.xml:3: parameter 'fov' of sensor 'perspective' must be float, not string"},
+        BadInput{"unparsable number",
+                 "<scene version='3.0.0'>\n<shape type='sphere'><float name='radius' value='1m'/></shape></scene>",
+                 "cannot parse '1m' as float"},
+        BadInput{"missing mesh file",
+                 "<scene version='3.0.0'>\n<shape type='obj'>\n<string name='filename' value='nowhere.obj'/>"
+                 "</shape></scene>",
+                 "bad.xml:3: parameter 'filename' of shape 'obj': mesh file 'nowhere.obj' not found"},
+        BadInput{"undefined $name", "<scene version='3.0.0'>\n\n<integer name='x' value='$spp'/></scene>",
+                 "bad.xml:3: undefined parameter '$spp'"},
+        BadInput{"dangling ref", "<scene version='3.0.0'>\n<shape type='cube'>\n<ref id='gold'/></shape></scene>",
+                 "bad.xml:3: reference to undefined id 'gold'"},
+        BadInput{"duplicate id",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse' id='a'/>\n<bsdf type='diffuse' id='a'/></scene>",
+                 "bad.xml:3: id 'a' is already used at bad.xml:2"},
+        BadInput{"required parameter", "<scene version='3.0.0'>\n<shape type='obj'/></scene>",
+                 "bad.xml:2: shape 'obj' requires parameter 'filename'"},
+        BadInput{"misplaced child",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<emitter type='area'/></bsdf></scene>",
+                 "bad.xml:3: bsdf 'diffuse' does not take a nested <emitter>"},
+        BadInput{"top-level area emitter", "<scene version='3.0.0'>\n<emitter type='area'/></scene>",
+                 "bad.xml:2: an area emitter must be nested in a shape"},
+        BadInput{"point light in a shape",
+                 "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='point'/></shape></scene>",
+                 "bad.xml:2: only an area emitter can be nested in a shape"},
+        BadInput{"bad enumeration",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'>\n"
+                 "<string name='fov_axis' value='z'/></sensor></scene>",
+                 "bad.xml:3: parameter 'fov_axis' of sensor 'perspective': must be x, y, diagonal, smaller or larger"},
+        BadInput{"unknown element",
+                 "<scene version='3.0.0'>\n<shape type='cube'>\n<colour name='a' value='1'/>"
+                 "</shape></scene>",
+                 "bad.xml:3: unknown element <colour>"},
+        BadInput{"bad transform step",
+                 "<scene version='3.0.0'>\n<shape type='cube'><transform name='to_world'>\n"
+                 "<shear value='1'/></transform></shape></scene>",
+                 "bad.xml:3: unknown transform step <shear>"},
+        BadInput{"singular matrix",
+                 "<scene version='3.0.0'>\n<shape type='cube'><transform name='to_world'>\n"
+                 "<scale value='0'/></transform></shape></scene>",
+                 "bad.xml:3: transform matrix is singular"},
+        BadInput{"degenerate lookat",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><transform name='to_world'>\n"
+                 "<lookat origin='1, 1, 1' target='1, 1, 1'/></transform></sensor></scene>",
+                 "bad.xml:3: lookat: origin and target coincide"},
+        BadInput{"two sensors",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'/>\n<sensor type='perspective'/>"
+                 "</scene>",
+                 "bad.xml:3: a scene may have only one sensor"}),
+    [](const testing::TestParamInfo<BadInput>& info) {
+      std::string name;
+      for (const char* c = info.param.what; *c; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+      return name;
+    });
+
+TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
+  try {
+    make_default_integrator("bdpt2");
+    FAIL();
+  } catch (const std::exception& e) {
+    EXPECT_THAT(e.what(), HasSubstr("unknown integrator 'bdpt2' (available: aov, direct, path"));
+  }
+}
+
+}  // namespace
+}  // namespace caustica
