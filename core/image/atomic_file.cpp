@@ -9,9 +9,14 @@ namespace caustica {
 
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write) {
+  // Appended piecewise: g++ 12 warns falsely (-Wrestrict) on "literal" + string&&.
+  std::string name = ".";
+  name += destination.stem().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  name += destination.extension().string();
   std::filesystem::path tmp = destination;
-  tmp.replace_filename("." + destination.stem().string() + ".tmp" + std::to_string(getpid()) +
-                       destination.extension().string());
+  tmp.replace_filename(name);
   try {
     write(tmp);
     std::filesystem::rename(tmp, destination);

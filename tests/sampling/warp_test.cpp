@@ -399,6 +399,15 @@ TEST(Chi2Helper, RejectsSamplesWherePdfIsZero) {
   EXPECT_EQ(r.p_value, 0) << r.report;
 }
 
+TEST(Chi2Helper, RejectsNonFinitePdf) {
+  Chi2Options o = options(205, 20, 40);
+  o.sample_count = 10'000;
+  const Chi2Result r = test::chi2_test_sphere(
+      direction_sampler(square_to_uniform_sphere),
+      [](const Vec3& w) { return w.z < -0.5f ? std::numeric_limits<double>::quiet_NaN() : uniform_sphere_pdf(); }, o);
+  EXPECT_EQ(r.p_value, 0) << r.report;
+}
+
 TEST(Chi2Helper, RejectsUnnormalisedPdf) {
   // The missing 10% of mass predicts failed samples that never come.
   Chi2Options o = options(204, 20, 40);

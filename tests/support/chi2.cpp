@@ -8,7 +8,6 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "core/math/constants.h"
@@ -30,18 +29,21 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Adaptive Simpson quadrature, nested for the two dimensions of a bin. Each
-// level of refinement costs only two evaluations, so a discontinuity inside a
-// bin (the rim of a disk, the edge of a pdf's support) can be chased down to a
-// 2^-kMaxLevel fraction of the bin cheaply, which keeps the inner integrals
-// accurate enough for the outer one to converge.
+// level of refinement costs two evaluations, so a jump inside a bin (the rim of
+// a disk, the edge of a pdf's support) is chased down to a 2^-kMaxLevel
+// fraction of the bin cheaply. That matters beyond the inner integral itself:
+// its error is noise in the outer integrand, and if that noise exceeded the
+// outer tolerance the outer integral would refine to the maximum level all
+// over the bin.
 constexpr int kMaxLevel = 24;
 // Panels of the first, non-adaptive pass: enough nodes that a pdf which is
 // small at the bin's centre and edges is not mistaken for zero.
 constexpr int kFirstPanels = 4;
-// Relative to the bin's integral, so that pdfs of any scale are integrated
-// alike; far below the statistical noise of any count, and still above the
-// float rounding noise of pdfs evaluated at float directions.
-constexpr double kRelTolerance = 1e-7;
+// Relative tolerances: the inner one well below the outer, for the reason
+// above, and both above the float rounding noise of pdfs evaluated at float
+// coordinates, which no refinement can remove.
+constexpr double kInnerTolerance = 1e-6;
+constexpr double kOuterTolerance = 1e-4;
 // The bin's own edges are evaluated this fraction of a bin inside it: a pdf may
 // be discontinuous exactly there (the horizon, a cone's rim on a bin edge) and
 // should be seen from the bin's side, or undefined there (the poles, a pdf
@@ -49,24 +51,31 @@ constexpr double kRelTolerance = 1e-7;
 // float coordinate, and its effect on the integral is of the same order.
 constexpr double kEdgeInset = 1e-5;
 
+// A panel is accepted when its error estimate is within the tolerance relative
+// to its own value, or within its share (by width) of the absolute tolerance of
+// the whole integral; the latter stops refinement where a pdf is tiny.
 template <typename F>
-double simpson_refine(const F& f, double a, double b, double fa, double fm, double fb, double whole, double eps,
-                      int level) {
+double simpson_refine(const F& f, double a, double b, double fa, double fm, double fb, double whole, double rel_tol,
+                      double abs_tol, int level) {
   const double m = 0.5 * (a + b);
   const double flm = f(0.5 * (a + m));
   const double frm = f(0.5 * (m + b));
   const double left = (m - a) / 6 * (fa + 4 * flm + fm);
   const double right = (b - m) / 6 * (fm + 4 * frm + fb);
-  const double delta = left + right - whole;
-  // |delta| / 15 estimates the error of left + right (Richardson), which is
-  // also why adding it improves the result.
-  if (level >= kMaxLevel || std::abs(delta) <= 15 * eps) return left + right + delta / 15;
-  return simpson_refine(f, a, m, fa, flm, fm, left, eps / 2, level + 1) +
-         simpson_refine(f, m, b, fm, frm, fb, right, eps / 2, level + 1);
+  const double refined = left + right;
+  const double delta = refined - whole;
+  // |delta| / 15 estimates the error of the refined value (Richardson), which
+  // is also why adding it improves the result. A pdf returning NaN or infinity
+  // ends the refinement at once, and the bin's expected count reports it.
+  if (level >= kMaxLevel || !std::isfinite(delta) ||
+      std::abs(delta) <= 15 * std::max(abs_tol, rel_tol * std::abs(refined)))
+    return refined + delta / 15;
+  return simpson_refine(f, a, m, fa, flm, fm, left, rel_tol, abs_tol / 2, level + 1) +
+         simpson_refine(f, m, b, fm, frm, fb, right, rel_tol, abs_tol / 2, level + 1);
 }
 
 template <typename F>
-double integrate_1d(const F& f, double a, double b) {
+double integrate_1d(const F& f, double a, double b, double rel_tol) {
   constexpr int kNodes = 2 * kFirstPanels + 1;
   const double step = (b - a) / (kNodes - 1);
   std::array<double, kNodes> fx;
@@ -80,12 +89,12 @@ double integrate_1d(const F& f, double a, double b) {
     coarse[p] = step / 3 * (fx[2 * p] + 4 * fx[2 * p + 1] + fx[2 * p + 2]);
     total += coarse[p];
   }
-  // The floor only matters where the first pass saw nothing but zeros.
-  const double eps = std::max(kRelTolerance * std::abs(total), 1e-15 * (b - a)) / kFirstPanels;
+  const double abs_tol = rel_tol * std::abs(total) / kFirstPanels;
   double sum = 0;
   for (int p = 0; p < kFirstPanels; ++p) {
     const double x0 = a + 2 * p * step;
-    sum += simpson_refine(f, x0, x0 + 2 * step, fx[2 * p], fx[2 * p + 1], fx[2 * p + 2], coarse[p], eps, 1);
+    sum +=
+        simpson_refine(f, x0, x0 + 2 * step, fx[2 * p], fx[2 * p + 1], fx[2 * p + 2], coarse[p], rel_tol, abs_tol, 1);
   }
   return sum;
 }
@@ -99,8 +108,11 @@ std::vector<double> bin_integrals(const Function2D& f, const Rect& r, int bins_u
   for (int i = 0; i < bins_u; ++i)
     for (int j = 0; j < bins_v; ++j) {
       const double v0 = r.y0 + j * dv, v1 = r.y0 + (j + 1) * dv;
-      const auto inner = [&](double u) { return integrate_1d([&](double v) { return f(u, v); }, v0, v1); };
-      out[static_cast<size_t>(i) * bins_v + j] = integrate_1d(inner, r.x0 + i * du, r.x0 + (i + 1) * du);
+      const auto inner = [&](double u) {
+        return integrate_1d([&](double v) { return f(u, v); }, v0, v1, kInnerTolerance);
+      };
+      out[static_cast<size_t>(i) * bins_v + j] =
+          integrate_1d(inner, r.x0 + i * du, r.x0 + (i + 1) * du, kOuterTolerance);
     }
   return out;
 }
@@ -338,10 +350,10 @@ double chi2_p_value(double statistic, int dof) {
   constexpr int kMaxIterations = 100000;
   constexpr double kEpsilon = 1e-15;
   // x^a e^-x / Gamma(a), common to both expansions, in logs to avoid overflow
-  // at the hundreds of degrees of freedom a binned test has.
+  // at the thousands of degrees of freedom a binned test has.
   const double prefactor = std::exp(a * std::log(x) - x - std::lgamma(a));
   if (x < a + 1) {
-    // Below the mode the series for the lower function P(a, x) =
+    // Here the series for the lower function P(a, x) =
     // prefactor * sum_n x^n / (a (a+1) ... (a+n)) converges fast; Q = 1 - P.
     double term = 1 / a, sum = term;
     for (int n = 1; n < kMaxIterations && std::abs(term) > kEpsilon * sum; ++n) {
@@ -350,7 +362,7 @@ double chi2_p_value(double statistic, int dof) {
     }
     return std::max(0.0, 1 - prefactor * sum);
   }
-  // Above it, Q(a, x) = prefactor / (x+1-a - 1(1-a) / (x+3-a - 2(2-a) / ...)),
+  // Beyond, Q(a, x) = prefactor / (x+1-a - 1(1-a) / (x+3-a - 2(2-a) / ...)),
   // evaluated by the modified Lentz method, which keeps Q accurate in the far
   // tail where 1 - P would round to zero.
   constexpr double kTiny = 1e-300;

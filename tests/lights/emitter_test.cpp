@@ -1,0 +1,103 @@
+// The light interface every integrator relies on: sample_Li agrees with
+// pdf_Li, sample_Le with pdf_Le, and power with the emitted flux.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/math/constants.h"
+#include "tests/support/test_scenes.h"
+
+namespace caustica {
+namespace {
+
+std::unique_ptr<Scene> light_scene(const std::string& shape) {
+  return test::scene_from_xml("<scene version='3.0.0'>" + shape + "</scene>");
+}
+
+const std::string kShapes[] = {
+    "<shape type='rectangle'><transform name='to_world'><scale x='0.5' y='2'/><rotate x='1' angle='30'/></transform>"
+    "<emitter type='area'><rgb name='radiance' value='2'/></emitter></shape>",
+    "<shape type='sphere'><float name='radius' value='0.5'/><emitter type='area'><rgb name='radiance' value='2'/>"
+    "</emitter></shape>",
+    "<shape type='disk'><transform name='to_world'><scale x='0.5' y='1.5'/></transform><emitter type='area'>"
+    "<rgb name='radiance' value='2'/></emitter></shape>"};
+
+class AreaEmitter : public testing::TestWithParam<std::string> {};
+
+TEST_P(AreaEmitter, SampledDensitiesMatchTheirPdfs) {
+  const auto scene = light_scene(GetParam());
+  const Emitter& light = *scene->emitters().front();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(0, kOneMinusEpsilon);
+  const ReferencePoint ref{{0.3f, 0.2f, 2.5f}, {}, {}};
+  int checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    const auto ls = light.sample_Li(ref, {u(rng), u(rng)});
+    if (!ls) continue;
+    ++checked;
+    const auto hit = scene->intersect({ref.p, ls->wi});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(light.pdf_Li(ref, ls->wi, *hit), ls->pdf, 2e-3f * ls->pdf);
+    EXPECT_EQ(ls->Li, light.L(*hit, -ls->wi));
+
+    const auto le = light.sample_Le({u(rng), u(rng)}, {u(rng), u(rng)});
+    ASSERT_TRUE(le);
+    float pdf_pos = 0, pdf_dir = 0;
+    light.pdf_Le(le->ray, le->n, &pdf_pos, &pdf_dir);
+    EXPECT_NEAR(pdf_pos, le->pdf_pos, 1e-4f * pdf_pos);
+    EXPECT_NEAR(pdf_dir, le->pdf_dir, 1e-4f * pdf_dir);
+    EXPECT_GT(dot(le->ray.d, le->n), 0);  // emitted to the lit side
+  }
+  EXPECT_GT(checked, 50);  // the light faces the reference point
+}
+
+// Flux = integral of Le cos over area and hemisphere = pi Le A; the
+// estimate from sample_Le's own densities must agree with power().
+TEST_P(AreaEmitter, PowerMatchesSampledFlux) {
+  const auto scene = light_scene(GetParam());
+  const Emitter& light = *scene->emitters().front();
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> u(0, kOneMinusEpsilon);
+  double flux = 0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const auto le = light.sample_Le({u(rng), u(rng)}, {u(rng), u(rng)});
+    if (le) flux += le->Le.r * dot(le->ray.d, le->n) / (le->pdf_pos * le->pdf_dir);
+  }
+  EXPECT_NEAR(flux / n, light.power().r, 0.01 * light.power().r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, AreaEmitter, testing::ValuesIn(kShapes));
+
+TEST(PointEmitter, DeltaLightFallsOffWithDistanceSquared) {
+  const auto scene = light_scene(
+      "<emitter type='point'><point name='position' value='0, 0, 2'/>"
+      "<rgb name='intensity' value='8'/></emitter>");
+  const Emitter& light = *scene->emitters().front();
+  const auto ls = light.sample_Li({{0, 0, 0}, {}, {}}, {0.5f, 0.5f});
+  ASSERT_TRUE(ls);
+  EXPECT_TRUE(ls->is_delta);
+  EXPECT_FLOAT_EQ(ls->Li.r, 2);
+  EXPECT_FLOAT_EQ(ls->wi.z, 1);
+  EXPECT_FLOAT_EQ(light.power().r, 8 * 4 * kPi);
+}
+
+TEST(ConstantEmitter, IlluminatesFromEveryDirection) {
+  const auto scene = light_scene(
+      "<emitter type='constant'><rgb name='radiance' value='0.5'/></emitter>"
+      "<shape type='sphere'/>");
+  const Emitter& light = *scene->emitters().front();
+  const auto ls = light.sample_Li({{0, 0, 5}, {}, {}}, {0.2f, 0.7f});
+  ASSERT_TRUE(ls);
+  EXPECT_TRUE(ls->is_infinite);
+  EXPECT_FLOAT_EQ(ls->pdf, 1 / (4 * kPi));
+  EXPECT_FLOAT_EQ(light.Le_infinite({1, 0, 0}).g, 0.5f);
+  // Emitted rays start outside the scene and head into it.
+  const auto le = light.sample_Le({0.3f, 0.6f}, {0.9f, 0.1f});
+  ASSERT_TRUE(le);
+  EXPECT_GT(length(le->ray.o), 1.0f);
+}
+
+}  // namespace
+}  // namespace caustica
