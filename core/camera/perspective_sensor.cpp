@@ -27,8 +27,7 @@ namespace {
 template <class T>
 std::shared_ptr<T> child_or_default(const Properties& props, const char* category, const char* name) {
   if (auto c = props.child<T>(category)) return c;
-  const PluginInfo* info = Registry::instance().find(category, name);
-  return std::dynamic_pointer_cast<T>(info->create(Properties(*info, props.where())));
+  return Registry::instance().create_default<T>(category, name, props.where());
 }
 
 class PerspectiveSensor final : public Sensor {

@@ -21,8 +21,7 @@ namespace {
 
 std::shared_ptr<ReconstructionFilter> filter_or_default(const Properties& props) {
   if (auto f = props.child<ReconstructionFilter>("rfilter")) return f;
-  const PluginInfo* gaussian = Registry::instance().find("rfilter", "gaussian");
-  return std::dynamic_pointer_cast<ReconstructionFilter>(gaussian->create(Properties(*gaussian, props.where())));
+  return Registry::instance().create_default<ReconstructionFilter>("rfilter", "gaussian", props.where());
 }
 
 int positive(const Properties& props, const char* name) {

@@ -7,12 +7,6 @@ namespace caustica {
 
 namespace {
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out.empty() ? "none" : out;
-}
-
 std::string plugin_name(const PluginInfo& info) { return info.category + " '" + info.name + "'"; }
 
 }  // namespace
@@ -23,7 +17,7 @@ void Properties::set(const std::string& name, PropertyValue value) {
     std::vector<std::string> accepted;
     for (const auto& p : info_->params) accepted.push_back(p.name);
     throw SceneError(value.where, "unknown parameter '" + name + "' for " + plugin_name(*info_) +
-                                      " (accepted: " + join(accepted) + ")");
+                                      " (accepted: " + join_names(accepted) + ")");
   }
   const std::string category =
       value.kind == ValueKind::Object ? std::get<ObjectValue>(value.value).category : std::string();
@@ -40,7 +34,7 @@ void Properties::add_child(ObjectValue child, const SourceLocation& where) {
   const auto& accepted = info_->child_categories;
   if (std::find(accepted.begin(), accepted.end(), child.category) == accepted.end())
     throw SceneError(where, plugin_name(*info_) + " does not take a nested <" + child.category +
-                                "> (accepted: " + join(accepted) + ")");
+                                "> (accepted: " + join_names(accepted) + ")");
   children_.emplace_back(std::move(child), where);
 }
 

@@ -69,4 +69,12 @@ class Properties {
   std::vector<std::pair<ObjectValue, SourceLocation>> children_;
 };
 
+template <class T>
+std::shared_ptr<T> Registry::create_default(const std::string& category, const std::string& name,
+                                            const SourceLocation& where) const {
+  const PluginInfo* info = find(category, name);
+  if (!info) throw SceneError(where, "no " + category + " plugin named '" + name + "'");
+  return std::dynamic_pointer_cast<T>(info->create(Properties(*info, where)));
+}
+
 }  // namespace caustica

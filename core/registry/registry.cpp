@@ -34,6 +34,12 @@ const ParamSpec* PluginInfo::param(const std::string& param_name) const {
   return nullptr;
 }
 
+std::string join_names(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& s : names) out += (out.empty() ? "" : ", ") + s;
+  return out.empty() ? "none" : out;
+}
+
 Registry& Registry::instance() {
   static Registry registry;
   return registry;

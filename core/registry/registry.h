@@ -8,6 +8,7 @@
 
 #include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
+#include "core/scene/scene_error.h"
 
 namespace caustica {
 
@@ -33,6 +34,11 @@ class Registry {
   bool add(PluginInfo info);
   const PluginInfo* find(const std::string& category, const std::string& name) const;
   std::vector<std::string> names(const std::string& category) const;
+  // The plugin with every parameter at its default, for objects a scene may
+  // leave out (a film's filter, a shape's material). `where` is blamed for errors.
+  template <class T>
+  std::shared_ptr<T> create_default(const std::string& category, const std::string& name,
+                                    const SourceLocation& where) const;
 
  private:
   std::map<std::pair<std::string, std::string>, PluginInfo> plugins_;
@@ -40,6 +46,9 @@ class Registry {
 
 // Registers a plugin from its own translation unit:
 //   CAUSTICA_REGISTER_PLUGIN(DiffuseBsdf, "bsdf", "diffuse", {{params...}}, {child categories});
+// "a, b, c", or "none" for an empty list: for messages that list what is accepted.
+std::string join_names(const std::vector<std::string>& names);
+
 #define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                               \
   [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add(   \
       ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {        \

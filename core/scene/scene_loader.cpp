@@ -18,36 +18,22 @@ const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float}
                                                      {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
                                                      {"point", ValueKind::Point},     {"vector", ValueKind::Vector}};
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
-}
-
 const std::string& required_attribute(const XmlNode& node, const char* name) {
   const std::string* v = node.attribute(name);
   if (!v) throw SceneError(node.where, "<" + node.tag + "> needs a '" + name + "' attribute");
   return *v;
 }
 
-void check_attributes(const XmlNode& node, std::initializer_list<const char*> allowed) {
-  for (const auto& [key, value] : node.attributes) {
-    bool ok = false;
-    for (const char* a : allowed) ok = ok || key == a;
-    if (!ok) throw SceneError(node.where, "unexpected attribute '" + key + "' on <" + node.tag + ">");
-  }
-}
-
 PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
   if ((kind == ValueKind::Point || kind == ValueKind::Vector) && !node.attribute("value")) {
-    check_attributes(node, {"name", "x", "y", "z"});
+    node.check_attributes({"name", "x", "y", "z"});
     const auto coord = [&](const char* a) {
       const std::string* v = node.attribute(a);
       return v ? std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value) : 0.0;
     };
     return {kind, Vec3(float(coord("x")), float(coord("y")), float(coord("z"))), node.where};
   }
-  check_attributes(node, {"name", "value"});
+  node.check_attributes({"name", "value"});
   const std::string& text = required_attribute(node, "value");
   if (node.tag == "spectrum" && text.find(':') != std::string::npos)
     throw SceneError(node.where, "<spectrum> takes a single value here, not wavelength:value pairs");
@@ -73,7 +59,7 @@ class Instantiator {
   }
 
   ObjectValue resolve_ref(const XmlNode& ref) {
-    check_attributes(ref, {"id", "name"});
+    ref.check_attributes({"id", "name"});
     const std::string& id = required_attribute(ref, "id");
     const auto it = ids_.find(id);
     if (it == ids_.end()) throw SceneError(ref.where, "reference to undefined id '" + id + "'");
@@ -94,12 +80,12 @@ class Instantiator {
   }
 
   ObjectValue create(const XmlNode& node) {
-    check_attributes(node, {"type", "id", "name"});
+    node.check_attributes({"type", "id", "name"});
     const std::string& type = required_attribute(node, "type");
     const PluginInfo* info = Registry::instance().find(node.tag, type);
     if (!info)
       throw SceneError(node.where, "unknown " + node.tag + " type '" + type +
-                                       "' (available: " + join(Registry::instance().names(node.tag)) + ")");
+                                       "' (available: " + join_names(Registry::instance().names(node.tag)) + ")");
     Properties props(*info, node.where);
     for (const XmlNode& child : node.children) add_child(props, child);
 
@@ -120,7 +106,7 @@ class Instantiator {
     if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
       props.set(required_attribute(child, "name"), parse_value_element(child, kind->second));
     } else if (child.tag == "transform") {
-      check_attributes(child, {"name"});
+      child.check_attributes({"name"});
       props.set(required_attribute(child, "name"), {ValueKind::Transform, parse_transform(child), child.where});
     } else if (kObjectTags.count(child.tag) || child.tag == "ref") {
       ObjectValue obj = child.tag == "ref" ? resolve_ref(child) : build(child);
@@ -137,8 +123,7 @@ class Instantiator {
     auto bsdf = props.child<Bsdf>("bsdf");
     if (!bsdf) {
       // As in Mitsuba, a shape without a material is a grey diffuse one.
-      const PluginInfo* diffuse = Registry::instance().find("bsdf", "diffuse");
-      bsdf = std::static_pointer_cast<Bsdf>(diffuse->create(Properties(*diffuse, node.where)));
+      bsdf = Registry::instance().create_default<Bsdf>("bsdf", "diffuse", node.where);
     }
     shape->set_bsdf(bsdf);
     if (auto emitter = props.child<Emitter>("emitter")) {
@@ -180,15 +165,8 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
       throw SceneError(node.where, "an area emitter must be nested in a shape");
     }
   }
-  if (!sensor) {
-    const PluginInfo* info = Registry::instance().find("sensor", "perspective");
-    sensor = std::static_pointer_cast<Sensor>(info->create(Properties(*info, root.where)));
-  }
+  if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_default_integrator("path");
-  for (const auto& e : inst.emitters)
-    if (e->is_area() &&
-        !std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->emitter() == e.get(); }))
-      throw SceneError(root.where, "an area emitter is nested in a shape that is not part of the scene");
   return std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), std::move(integrator),
                                  source);
 }
@@ -208,8 +186,8 @@ std::shared_ptr<Integrator> make_default_integrator(const std::string& name) {
   const PluginInfo* info = Registry::instance().find("integrator", name);
   if (!info)
     throw std::invalid_argument("unknown integrator '" + name +
-                                "' (available: " + join(Registry::instance().names("integrator")) + ")");
-  return std::static_pointer_cast<Integrator>(info->create(Properties(*info, {name, 0})));
+                                "' (available: " + join_names(Registry::instance().names("integrator")) + ")");
+  return Registry::instance().create_default<Integrator>("integrator", name, {name, 0});
 }
 
 }  // namespace caustica

@@ -25,21 +25,13 @@ Vec3 xyz(const XmlNode& node, float fallback) {
   return {number(node, "x", fallback), number(node, "y", fallback), number(node, "z", fallback)};
 }
 
-void check_attributes(const XmlNode& node, std::initializer_list<const char*> allowed) {
-  for (const auto& [key, value] : node.attributes) {
-    bool ok = false;
-    for (const char* a : allowed) ok = ok || key == a;
-    if (!ok) throw SceneError(node.where, "unexpected attribute '" + key + "' on <" + node.tag + ">");
-  }
-}
-
 Transform parse_step(const XmlNode& step) {
   if (step.tag == "translate") {
-    check_attributes(step, {"x", "y", "z", "value"});
+    step.check_attributes({"x", "y", "z", "value"});
     return Transform::translate(xyz(step, 0));
   }
   if (step.tag == "scale") {
-    check_attributes(step, {"x", "y", "z", "value"});
+    step.check_attributes({"x", "y", "z", "value"});
     if (const std::string* v = step.attribute("value"); v && v->find_first_of(", ") == std::string::npos) {
       const float s = number(step, "value", 1);
       return Transform::scale({s, s, s});
@@ -47,13 +39,13 @@ Transform parse_step(const XmlNode& step) {
     return Transform::scale(xyz(step, 1));
   }
   if (step.tag == "rotate") {
-    check_attributes(step, {"x", "y", "z", "value", "angle"});
+    step.check_attributes({"x", "y", "z", "value", "angle"});
     const Vec3 axis = xyz(step, 0);
     if (squared_length(axis) == 0) throw SceneError(step.where, "<rotate> needs a non-zero axis");
     return Transform::rotate(axis, number(step, "angle", 0));
   }
   if (step.tag == "matrix") {
-    check_attributes(step, {"value"});
+    step.check_attributes({"value"});
     const std::string* v = step.attribute("value");
     if (!v) throw SceneError(step.where, "<matrix> needs a 'value' attribute");
     std::vector<float> values;
@@ -78,7 +70,7 @@ Transform parse_step(const XmlNode& step) {
     return Transform(m);
   }
   if (step.tag == "lookat") {
-    check_attributes(step, {"origin", "target", "up"});
+    step.check_attributes({"origin", "target", "up"});
     const Vec3 up = step.attribute("up") ? triple(step, "up") : Vec3(0, 1, 0);
     return Transform::look_at(triple(step, "origin"), triple(step, "target"), up);
   }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -21,6 +22,16 @@ struct XmlNode {
     for (const auto& [key, value] : attributes)
       if (key == name) return &value;
     return nullptr;
+  }
+
+  // Throws if the element carries an attribute outside `allowed`: a typo
+  // such as valeu="..." must not pass silently.
+  void check_attributes(std::initializer_list<std::string_view> allowed) const {
+    for (const auto& [key, value] : attributes) {
+      bool ok = false;
+      for (std::string_view a : allowed) ok = ok || key == a;
+      if (!ok) throw SceneError(where, "unexpected attribute '" + key + "' on <" + tag + ">");
+    }
   }
 };
 
