@@ -31,21 +31,17 @@ class AreaEmitter final : public Emitter {
   bool is_area() const override { return true; }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const override {
-    const PositionSample ps = shape_->sample_position(u);
+    const PositionSample ps = shape_->sample_seen_from(ref.p, u);
     if (ps.pdf <= 0) return std::nullopt;
-    Vec3 wi = ps.p - ref.p;
-    const float dist2 = squared_length(wi);
-    if (dist2 == 0) return std::nullopt;
-    wi = wi / std::sqrt(dist2);
-    const float cos_light = -dot(wi, ps.n);
-    if (cos_light <= 0) return std::nullopt;
-    return LiSample{wi, radiance_, ps.pdf * dist2 / cos_light, false, ps.p, ps.p_error, ps.n, false};
+    const Vec3 wi = normalize(ps.p - ref.p);
+    // Emission is one-sided: a point seen from behind sends nothing.
+    if (dot(wi, ps.n) >= 0) return std::nullopt;
+    return LiSample{wi, radiance_, ps.pdf, false, ps.p, ps.p_error, ps.n, false};
   }
 
   float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const override {
-    const float cos_light = -dot(wi, on_light.shading.n);
-    if (cos_light <= 0) return 0;
-    return squared_length(on_light.p - ref.p) / (cos_light * shape_->area());
+    if (dot(wi, on_light.shading.n) >= 0) return 0;
+    return shape_->pdf_seen_from(ref.p, on_light);
   }
 
   Color L(const SurfaceInteraction& si, Vec3 w) const override {

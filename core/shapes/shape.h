@@ -38,6 +38,11 @@ class Shape : public Plugin {
   virtual float area() const = 0;
   virtual Bounds3 bounds() const = 0;
   virtual PositionSample sample_position(Vec2 u) const = 0;
+  // A point sampled for a viewer at `ref`, its pdf converted to solid angle
+  // at ref. Shapes that can sample only what ref sees (a sphere's visible
+  // cone) override both; by default the area sample is converted.
+  virtual PositionSample sample_seen_from(Vec3 ref, Vec2 u) const;
+  virtual float pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const;
   virtual std::string kind() const = 0;
 
   const std::shared_ptr<Bsdf>& bsdf() const { return bsdf_; }

@@ -79,6 +79,34 @@ class SphereShape final : public AnalyticShape {
     return {si.p, si.p_error, si.shading.n, si.uv, 1 / area()};
   }
 
+  // Seen from outside, only the cone the sphere subtends is sampled,
+  // uniformly in solid angle (each direction hits the near side once).
+  PositionSample sample_seen_from(Vec3 ref, Vec2 u) const override {
+    const Vec3 to_center = center_ - ref;
+    const float dist2 = squared_length(to_center);
+    if (dist2 <= radius_ * radius_ * (1 + 1e-4f)) return AnalyticShape::sample_seen_from(ref, u);
+    const float dist = std::sqrt(dist2);
+    const float sin2_max = radius_ * radius_ / dist2;
+    const float cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
+    // 1 - cos from sin^2 keeps its precision for a far-away, tiny cone.
+    const float versine = sin2_max / (1 + cos_max);
+    const Vec3 local = square_to_uniform_cone_from_versine(u, versine);
+    const Vec3 dir = Frame::from_normal(to_center / dist).to_world(local);
+    // Nearer root of |ref + t dir - c| = r, with the discriminant clamped at
+    // the silhouette where rounding can push it below zero.
+    const float sin2 = std::max(0.0f, 1 - local.z * local.z);
+    const float t = dist * local.z - std::sqrt(std::max(0.0f, radius_ * radius_ - dist2 * sin2));
+    const SurfaceInteraction si = at_direction(normalize(ref + dir * t - center_), kInfinity);
+    return {si.p, si.p_error, si.shading.n, si.uv, uniform_cone_pdf_from_versine(versine)};
+  }
+
+  float pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const override {
+    const float dist2 = squared_length(center_ - ref);
+    if (dist2 <= radius_ * radius_ * (1 + 1e-4f)) return AnalyticShape::pdf_seen_from(ref, on_surface);
+    const float sin2_max = radius_ * radius_ / dist2;
+    return uniform_cone_pdf_from_versine(sin2_max / (1 + std::sqrt(std::max(0.0f, 1 - sin2_max))));
+  }
+
   std::string kind() const override { return "sphere"; }
 
  private:

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "core/registry/properties.h"
@@ -73,6 +74,27 @@ TEST(DirectLighting, SphereLightOnPlane) {
           << integrator << " at (" << p[0] << ", " << p[1] << "): " << mean << " +- " << se << ", expected "
           << expected;
     }
+  }
+}
+
+// A tiny light far away (a sun-like cone of 1e-8 sr) keeps its precision:
+// the cone is sampled from its versine, never from a rounded cosine.
+TEST(DirectLighting, TinyFarSphereLight) {
+  const float radius = 0.01f, height = 100, Le = 1e8f;
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='direct'/><shape type='rectangle'><transform name='to_world'>"
+      "<scale value='1000'/></transform><bsdf type='diffuse'><rgb name='reflectance' value='" +
+      std::to_string(kRho) + "'/></bsdf></shape><shape type='sphere'><point name='center' x='0' y='0' z='" +
+      std::to_string(height) + "'/><float name='radius' value='" + std::to_string(radius) +
+      "'/><emitter type='area'><rgb name='radiance' value='" + std::to_string(Le) + "'/></emitter></shape></scene>");
+  const double z_critical = test::two_sided_z_critical(test::sidak_alpha(0.001, 2));
+  for (const auto& p : {std::array<float, 2>{0, 0}, std::array<float, 2>{30, 40}}) {
+    const double d = std::sqrt(p[0] * p[0] + p[1] * p[1] + height * height);
+    const double expected = kRho * Le * radius * radius * height / (d * d * d);
+    const auto [mean, se] = estimate(*scene, p[0], p[1], 4000);
+    const double rounding = 1e-4 * expected;  // float geometry at this scale
+    EXPECT_LT(std::abs(mean - expected) / std::sqrt(se * se + rounding * rounding), z_critical)
+        << mean << " +- " << se << ", expected " << expected;
   }
 }
 

@@ -1,0 +1,29 @@
+#include "core/shapes/shape.h"
+
+#include <cmath>
+
+namespace caustica {
+
+namespace {
+
+// Area density to solid angle density at ref: dA = d^2 / |cos| d(omega).
+float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
+  const Vec3 d = p - ref;
+  const float dist2 = squared_length(d);
+  const float cos_surface = std::abs(dot(d, n)) / std::sqrt(dist2);
+  return dist2 > 0 && cos_surface > 0 ? pdf_area * dist2 / cos_surface : 0;
+}
+
+}  // namespace
+
+PositionSample Shape::sample_seen_from(Vec3 ref, Vec2 u) const {
+  PositionSample ps = sample_position(u);
+  ps.pdf = area_to_solid_angle(ps.pdf, ref, ps.p, ps.n);
+  return ps;
+}
+
+float Shape::pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const {
+  return area_to_solid_angle(1 / area(), ref, on_surface.p, on_surface.shading.n);
+}
+
+}  // namespace caustica
