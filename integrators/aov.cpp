@@ -9,7 +9,7 @@
 //           geo_normal geometric normal, world space (name.X/Y/Z)
 //           position   hit point, world space (name.X/Y/Z)
 //           uv         surface coordinates (name.U/V)
-//           depth      distance along the camera ray (name.T)
+//           depth      distance from the camera along the ray (name.T)
 //         Rays that miss write zeros.
 //
 //   <integrator type="aov"><string name="aovs" value="a:albedo,n:sh_normal"/></integrator>

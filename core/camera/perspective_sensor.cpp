@@ -68,8 +68,7 @@ class PerspectiveSensor final : public Sensor {
                      1};
     const Vec3 d_local = normalize(local);
     const Vec3 d = normalize(to_world_.vector(d_local));
-    const float near_t = near_ / d_local.z;
-    return {origin_ + d * near_t, d, (far_ - near_) / d_local.z};
+    return {origin_, d, far_ / d_local.z, near_ / d_local.z};
   }
 
   Color We(const Ray& ray, Vec2* raster) const override {

@@ -15,7 +15,7 @@ RTCRay to_rtc(const Ray& ray) {
   r.dir_x = ray.d.x;
   r.dir_y = ray.d.y;
   r.dir_z = ray.d.z;
-  r.tnear = 0;
+  r.tnear = ray.t_min;
   r.tfar = ray.t_max;
   r.mask = ~0u;
   r.flags = 0;

@@ -6,7 +6,8 @@ namespace {
 Ray ray_from(RTCRayN* rays, unsigned n, unsigned i) {
   return {{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)},
           {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)},
-          RTCRayN_tfar(rays, n, i)};
+          RTCRayN_tfar(rays, n, i),
+          RTCRayN_tnear(rays, n, i)};
 }
 
 void user_bounds(const RTCBoundsFunctionArguments* args) {

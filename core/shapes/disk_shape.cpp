@@ -41,7 +41,7 @@ class DiskShape final : public AnalyticShape {
     }
     if (d[2] == 0) return false;
     const double t = -o[2] / d[2];
-    if (!(t > 0) || t >= ray.t_max) return false;
+    if (!(t > ray.t_min) || t >= ray.t_max) return false;
     const double x = o[0] + t * d[0], y = o[1] + t * d[1];
     if (x * x + y * y > 1) return false;
     hit.t = float(t);

@@ -52,8 +52,8 @@ class SphereShape final : public AnalyticShape {
     const double q = b + std::copysign(std::sqrt(disc), b);
     double t0 = q / a, t1 = q == 0 ? t0 : ((ox * ox + oy * oy + oz * oz) - r * r) / q;
     if (t0 > t1) std::swap(t0, t1);
-    const double t = t0 > 0 ? t0 : t1;
-    if (!(t > 0) || t >= ray.t_max) return false;
+    const double t = t0 > ray.t_min ? t0 : t1;
+    if (!(t > ray.t_min) || t >= ray.t_max) return false;
     hit.t = float(t);
     hit.prim = 0;
     hit.uv = {};
