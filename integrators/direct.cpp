@@ -3,8 +3,9 @@
 // sampling (power heuristic, accounting for the number of each).
 //
 // Parameters
-//   emitter_samples  integer  1      next-event samples per camera ray
-//   bsdf_samples     integer  1      BSDF samples per camera ray
+//   shading_samples  integer  1      default for both counts below
+//   emitter_samples  integer  shading_samples  next-event samples per camera ray
+//   bsdf_samples     integer  shading_samples  BSDF samples per camera ray
 //   hide_emitters    boolean  false  emitters seen directly appear black
 //
 //   <integrator type="direct"><integer name="emitter_samples" value="4"/></integrator>
@@ -19,7 +20,7 @@ namespace caustica {
 namespace {
 
 int64_t count(const Properties& props, const char* name) {
-  const int64_t n = props.get_int(name);
+  const int64_t n = props.has(name) ? props.get_int(name) : props.get_int("shading_samples");
   if (n < 0) throw props.error(name, "must not be negative");
   return n;
 }
@@ -92,7 +93,8 @@ class DirectIntegrator final : public RadianceIntegrator {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DirectIntegrator, "integrator", "direct",
-                         {{"emitter_samples", ParamType::Integer, "1", "emitter samples per ray"},
+                         {{"shading_samples", ParamType::Integer, "1", "default sample count"},
+                          {"emitter_samples", ParamType::Integer, "1", "emitter samples per ray"},
                           {"bsdf_samples", ParamType::Integer, "1", "BSDF samples per ray"},
                           {"hide_emitters", ParamType::Boolean, "false", "hide directly visible emitters"}},
                          {});

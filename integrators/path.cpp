@@ -4,7 +4,8 @@
 //
 // Parameters
 //   max_depth         integer  -1     longest path in segments from the camera; -1 for no
-//                                      limit, 1 shows emitters only, 2 direct light only
+//                                      limit, 0 renders black, 1 shows emitters only, 2 direct
+//                                      light only
 //   rr_depth          integer  5      depth from which Russian roulette may end paths
 //   rr_max_survival   float    0.95   upper bound on the survival probability
 //   hide_emitters     boolean  false  emitters seen directly by the camera appear black
@@ -40,6 +41,7 @@ class PathIntegrator final : public RadianceIntegrator {
   }
 
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
+    if (max_depth_ == 0) return {};
     Color L, beta(1);
     float eta_scale = 1;
     bool specular = true;  // the camera ray counts as a specular "bounce"

@@ -93,6 +93,9 @@ class PerspectiveSensor final : public Sensor {
     const float dist2 = squared_length(wi);
     if (dist2 == 0) return std::nullopt;
     wi = wi / std::sqrt(dist2);
+    // Points outside the clipping planes are invisible to camera rays too.
+    const float z = -dot(wi, forward_) * std::sqrt(dist2);
+    if (z < near_ || z > far_) return std::nullopt;
     Vec2 raster;
     const Color importance = We({origin_, -wi, kInfinity}, &raster);
     if (importance.is_black()) return std::nullopt;

@@ -11,8 +11,9 @@ FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels)
   const size_t pixels = size_t(width) * height;
   weighted_sum_.assign(pixels * channels_.size(), 0);
   weight_sum_.assign(pixels, 0);
-  mean_.assign(pixels * 3, 0);
-  m2_.assign(pixels * 3, 0);
+  weight2_sum_.assign(pixels, 0);
+  w2x_.assign(pixels * 3, 0);
+  w2x2_.assign(pixels * 3, 0);
   count_.assign(pixels, 0);
 }
 
@@ -30,12 +31,12 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   double* sum = &weighted_sum_[p * channels_.size()];
   for (size_t c = 0; c < channels_.size(); ++c) sum[c] += double(weight) * values[c];
   weight_sum_[p] += weight;
-  const uint32_t n = ++count_[p];
+  const double w2 = double(weight) * weight;
+  weight2_sum_[p] += w2;
+  ++count_[p];
   for (size_t c = 0; c < std::min<size_t>(3, values.size()); ++c) {
-    double& mean = mean_[p * 3 + c];
-    const double delta = values[c] - mean;
-    mean += delta / n;
-    m2_[p * 3 + c] += delta * (values[c] - mean);
+    w2x_[p * 3 + c] += w2 * values[c];
+    w2x2_[p * 3 + c] += w2 * values[c] * values[c];
   }
 }
 
@@ -49,10 +50,17 @@ std::vector<float> FilmBuffer::resolve() const {
 }
 
 std::vector<float> FilmBuffer::variance() const {
-  std::vector<float> out(m2_.size(), 0);
-  for (size_t p = 0; p < count_.size(); ++p)
-    if (count_[p] > 1)
-      for (int c = 0; c < 3; ++c) out[p * 3 + c] = float(m2_[p * 3 + c] / (count_[p] - 1) / count_[p]);
+  std::vector<float> out(w2x_.size(), 0);
+  const size_t nc = channels_.size();
+  for (size_t p = 0; p < count_.size(); ++p) {
+    const double n = count_[p], W = weight_sum_[p];
+    if (n < 2 || W == 0) continue;
+    for (size_t c = 0; c < std::min<size_t>(3, nc); ++c) {
+      const double mean = weighted_sum_[p * nc + c] / W;
+      const double spread = w2x2_[p * 3 + c] - 2 * mean * w2x_[p * 3 + c] + mean * mean * weight2_sum_[p];
+      out[p * 3 + c] = float(std::max(0.0, spread) / (W * W) * n / (n - 1));
+    }
+  }
   return out;
 }
 

@@ -36,8 +36,9 @@ class FilmBuffer {
 
   // The weighted mean of each channel, pixel-interleaved.
   std::vector<float> resolve() const;
-  // Per-pixel sample variance of the weighted mean's beauty channels
-  // (Welford over the samples), pixel-interleaved, three per pixel.
+  // Per-pixel variance of the weighted mean of the beauty channels,
+  // estimated from the samples as sum w^2 (x - mean)^2 / (sum w)^2 with the
+  // n / (n - 1) correction; pixel-interleaved, three per pixel.
   std::vector<float> variance() const;
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
 
@@ -51,8 +52,8 @@ class FilmBuffer {
   int width_, height_;
   std::vector<std::string> channels_;
   std::vector<double> weighted_sum_;  // channels per pixel
-  std::vector<double> weight_sum_;
-  std::vector<double> mean_, m2_;  // Welford state, three per pixel
+  std::vector<double> weight_sum_, weight2_sum_;
+  std::vector<double> w2x_, w2x2_;  // sums of w^2 x and w^2 x^2, three per pixel
   std::vector<uint32_t> count_;
   struct DropLog {
     std::atomic<uint64_t> count{0};

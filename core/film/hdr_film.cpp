@@ -31,9 +31,14 @@ int positive(const Properties& props, const char* name) {
 }
 
 class HdrFilm final : public Film {
+  // 8192 x 8192; the accumulation buffers take about 100 bytes a pixel.
+  static constexpr int64_t kMaxPixels = int64_t(1) << 26;
+
  public:
   explicit HdrFilm(const Properties& props)
       : Film(positive(props, "width"), positive(props, "height"), filter_or_default(props), half(props)) {
+    if (int64_t(width()) * height() > kMaxPixels)
+      throw props.error("height", "width x height must be at most " + std::to_string(kMaxPixels) + " pixels");
     const std::string format = props.get_string("pixel_format");
     if (format != "rgb" && format != "rgba") throw props.error("pixel_format", "must be rgb or rgba");
   }

@@ -40,6 +40,8 @@ EmbreeScene::EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes) {
     by_geom_id_[id] = shape.get();
   }
   rtcCommitScene(scene_);
+  if (const RTCError error = rtcGetDeviceError(device_); error != RTC_ERROR_NONE)
+    throw std::runtime_error("Embree failed to build the scene (error " + std::to_string(int(error)) + ")");
 }
 
 EmbreeScene::~EmbreeScene() {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+
 #include "core/geometry/offset.h"
 #include "core/math/frame.h"
 #include "core/math/vec.h"
@@ -25,10 +27,11 @@ struct SurfaceInteraction {
     const Vec3 o = offset_ray_origin(p, p_error, ng, target - p);
     const Vec3 to = target_n == Vec3() ? target : offset_ray_origin(target, target_error, target_n, o - target);
     const Vec3 d = to - o;
-    return {o, d, 1 - kShadowEpsilon};
+    // The target is already off its surface; the margin only absorbs the
+    // rounding of t itself, in proportion to the target's error bound.
+    const float margin = 4 * length(target_error) / std::max(length(d), 1e-30f);
+    return {o, d, std::max(0.5f, 1 - margin)};
   }
-
-  static constexpr float kShadowEpsilon = 1e-4f;
 };
 
 }  // namespace caustica

@@ -1,8 +1,9 @@
 // area: makes the shape it is nested in emit, uniformly and diffusely, from
-// the side its normals point to.
+// the side its normals point to (the geometric normal, turned to the side of
+// the shading normal where a mesh has vertex normals).
 //
 // Parameters
-//   radiance  rgb  1  emitted radiance
+//   radiance  rgb  (required)  emitted radiance
 //
 //   <shape type="rectangle">
 //       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
@@ -40,13 +41,11 @@ class AreaEmitter final : public Emitter {
   }
 
   float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const override {
-    if (dot(wi, on_light.shading.n) >= 0) return 0;
+    if (dot(wi, on_light.ng) >= 0) return 0;
     return shape_->pdf_seen_from(ref.p, on_light);
   }
 
-  Color L(const SurfaceInteraction& si, Vec3 w) const override {
-    return dot(w, si.shading.n) > 0 ? radiance_ : Color();
-  }
+  Color L(const SurfaceInteraction& si, Vec3 w) const override { return dot(w, si.ng) > 0 ? radiance_ : Color(); }
 
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
     const PositionSample ps = shape_->sample_position(u_pos);
@@ -74,6 +73,7 @@ class AreaEmitter final : public Emitter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}}, {});
+CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area",
+                         {{"radiance", ParamType::Color, std::nullopt, "emitted radiance"}}, {});
 
 }  // namespace caustica

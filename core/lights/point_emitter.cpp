@@ -40,7 +40,7 @@ class PointEmitter final : public Emitter {
   }
 
   void pdf_Le(const Ray&, Vec3, float* pdf_pos, float* pdf_dir) const override {
-    *pdf_pos = 0;
+    *pdf_pos = 1;  // a delta position, reported as sample_Le reports it
     *pdf_dir = uniform_sphere_pdf();
   }
 

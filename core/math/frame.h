@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/math/constants.h"
 #include "core/math/vec.h"
 
 namespace caustica {
@@ -25,6 +26,12 @@ struct Frame {
   Vec3 to_local(Vec3 v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
   Vec3 to_world(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }
 };
+
+// The angle of (x, y) from the +x axis, in [0, 2 pi).
+inline float azimuth(float x, float y) {
+  const float phi = std::atan2(y, x);
+  return phi < 0 ? phi + 2 * kPi : phi;
+}
 
 inline float cos_theta(Vec3 w) { return w.z; }
 inline float abs_cos_theta(Vec3 w) { return std::abs(w.z); }

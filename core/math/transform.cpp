@@ -56,7 +56,10 @@ bool Matrix4::inverse(Matrix4& out) const {
     }
   }
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) out.m[i][j] = float(a[i][j + 4]);
+    for (int j = 0; j < 4; ++j) {
+      out.m[i][j] = float(a[i][j + 4]);
+      if (!std::isfinite(out.m[i][j])) return false;  // numerically singular
+    }
   return true;
 }
 
@@ -98,7 +101,8 @@ Transform Transform::look_at(Vec3 origin, Vec3 target, Vec3 up) {
   if (target == origin) throw std::invalid_argument("lookat: origin and target coincide");
   const Vec3 dir = normalize(target - origin);
   const Vec3 left = cross(normalize(up), dir);
-  if (squared_length(left) == 0) throw std::invalid_argument("lookat: 'up' is parallel to the viewing direction");
+  if (!(squared_length(left) > 0))
+    throw std::invalid_argument("lookat: 'up' is zero or parallel to the viewing direction");
   const Vec3 l = normalize(left);
   const Vec3 u = cross(dir, l);
   Matrix4 m = Matrix4::identity();

@@ -4,7 +4,7 @@ namespace caustica {
 
 int64_t read_max_depth(const Properties& props) {
   const int64_t d = props.get_int("max_depth");
-  if (d == 0 || d < -1) throw props.error("max_depth", "must be -1 (unlimited) or at least 1");
+  if (d < -1) throw props.error("max_depth", "must be -1 (unlimited) or at least 0");
   return d;
 }
 

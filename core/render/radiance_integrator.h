@@ -19,7 +19,7 @@ class RadianceIntegrator : public Integrator {
   }
 };
 
-// Reads max_depth, which may be -1 (unlimited) or at least 1.
+// Reads max_depth, which may be -1 (unlimited) or at least 0 (a black image).
 int64_t read_max_depth(const Properties& props);
 
 }  // namespace caustica

@@ -77,12 +77,15 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   double last_pass = 0;
   // Small passes at first so progress and time budgets react quickly.
   uint32_t pass = 1;
-  while (timed ? elapsed() + last_pass < options.time_limit || done == 0 : done < target) {
+  // A pass costs about last_pass scaled by its share of samples.
+  uint32_t last_count = 1;
+  while (timed ? elapsed() + last_pass * pass / last_count < options.time_limit || done == 0 : done < target) {
     const uint32_t count = timed ? pass : std::min(pass, target - done);
     const double pass_start = elapsed();
     arena.execute([&] { render_pass(scene, tiles, done, count, options.seed, film); });
     done += count;
     last_pass = elapsed() - pass_start;
+    last_count = count;
     pass = std::min<uint32_t>(pass * 2, 16);
     if (on_pass) on_pass({done, target, elapsed(), scene.rays_traced() - rays_before});
   }

@@ -110,7 +110,10 @@ class Instantiator {
       props.set(required_attribute(child, "name"), {ValueKind::Transform, parse_transform(child), child.where});
     } else if (kObjectTags.count(child.tag) || child.tag == "ref") {
       ObjectValue obj = child.tag == "ref" ? resolve_ref(child) : build(child);
-      if (const std::string* name = child.attribute("name"))
+      // A name makes the object a parameter only where the plugin declares
+      // one by that name; elsewhere (a shape's named bsdf) it is a child.
+      const std::string* name = child.attribute("name");
+      if (name && props.info().param(*name))
         props.set(*name, {ValueKind::Object, obj, child.where});
       else
         props.add_child(obj, child.where);

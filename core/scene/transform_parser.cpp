@@ -60,13 +60,9 @@ Transform parse_step(const XmlNode& step) {
       }
     }
     Matrix4 m = Matrix4::identity();
-    if (values.size() == 16) {
-      for (int i = 0; i < 16; ++i) m.m[i / 4][i % 4] = values[i];
-    } else if (values.size() == 9) {
-      for (int i = 0; i < 9; ++i) m.m[i / 3][i % 3] = values[i];
-    } else {
-      throw SceneError(step.where, "<matrix> needs 16 (or 9) numbers, found " + std::to_string(values.size()));
-    }
+    if (values.size() != 16)
+      throw SceneError(step.where, "<matrix> needs 16 numbers (row-major 4x4), found " + std::to_string(values.size()));
+    for (int i = 0; i < 16; ++i) m.m[i / 4][i % 4] = values[i];
     return Transform(m);
   }
   if (step.tag == "lookat") {

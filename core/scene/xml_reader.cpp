@@ -78,6 +78,19 @@ void upgrade_from_0x(XmlNode& node) {
   }
 }
 
+// An 0.x ldrfilm becomes an hdrfilm; its display settings (tone mapping,
+// gamma, exposure, banner) have no counterpart there and are dropped, since
+// display-referred output is a separate stage of caustica's.
+void drop_ldrfilm_display_settings(XmlNode& film) {
+  static const char* const display_settings[] = {"tonemap_method", "gamma",  "exposure",          "key",
+                                                 "burn",           "banner", "high_quality_edges"};
+  std::erase_if(film.children, [](const XmlNode& child) {
+    const std::string* name = child.attribute("name");
+    return name &&
+           std::find(std::begin(display_settings), std::end(display_settings), *name) != std::end(display_settings);
+  });
+}
+
 // Identifies a file for include-cycle detection even when reached by different relative paths.
 fs::path identity_of(const fs::path& file) {
   std::error_code ec;
@@ -172,6 +185,8 @@ class Reader {
     for (pugi::xml_attribute attribute : element.attributes())
       node.attributes.emplace_back(attribute.name(), substitute(attribute.value(), node.where));
     if (ctx.upgrade) upgrade_from_0x(node);
+    const bool was_ldrfilm = ctx.upgrade && element.name() == std::string_view("film") &&
+                             element.attribute("type").value() == std::string_view("ldrfilm");
     for (pugi::xml_node child : element.children()) {
       if (child.type() != pugi::node_element) continue;
       std::string_view tag = child.name();
@@ -183,6 +198,7 @@ class Reader {
         node.children.push_back(convert(child, ctx, /*is_root=*/false));
       }
     }
+    if (was_ldrfilm) drop_ldrfilm_display_settings(node);
     return node;
   }
 

@@ -67,7 +67,7 @@ class DiskShape final : public AnalyticShape {
 
   PositionSample sample_position(Vec2 u) const override {
     const SurfaceInteraction si = at_local(square_to_uniform_disk_concentric(u), kInfinity);
-    return {si.p, si.p_error, si.shading.n, si.uv, 1 / area_};
+    return {si.p, si.p_error, si.ng, si.uv, 1 / area_};
   }
 
   std::string kind() const override { return "disk"; }
@@ -82,7 +82,7 @@ class DiskShape final : public AnalyticShape {
     si.shape = this;
     si.ng = normal_;
     si.shading = Frame::from_normal(normal_);
-    si.uv = {std::sqrt(xy.x * xy.x + xy.y * xy.y), (std::atan2(xy.y, xy.x) + kPi) * kInv2Pi};
+    si.uv = {std::sqrt(xy.x * xy.x + xy.y * xy.y), azimuth(xy.x, xy.y) * kInv2Pi};
     return si;
   }
 

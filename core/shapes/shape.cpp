@@ -23,7 +23,7 @@ PositionSample Shape::sample_seen_from(Vec3 ref, Vec2 u) const {
 }
 
 float Shape::pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const {
-  return area_to_solid_angle(1 / area(), ref, on_surface.p, on_surface.shading.n);
+  return area_to_solid_angle(1 / area(), ref, on_surface.p, on_surface.ng);
 }
 
 }  // namespace caustica

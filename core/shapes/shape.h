@@ -14,7 +14,9 @@ namespace caustica {
 class Bsdf;
 class Emitter;
 
-// A point sampled on a surface, with its density per unit area.
+// A point sampled on a surface, with its density (per unit area from
+// sample_position, per unit solid angle from sample_seen_from). n is the
+// geometric normal: densities convert between measures with its cosine.
 struct PositionSample {
   Vec3 p, p_error, n;
   Vec2 uv;

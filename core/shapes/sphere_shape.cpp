@@ -31,7 +31,8 @@ class SphereShape final : public AnalyticShape {
     const float scale = length(sx);
     const float tolerance = 1e-4f * scale;
     if (std::abs(length(sy) - scale) > tolerance || std::abs(length(sz) - scale) > tolerance ||
-        std::abs(dot(sx, sy)) > tolerance * scale || std::abs(dot(sx, sz)) > tolerance * scale)
+        std::abs(dot(sx, sy)) > tolerance * scale || std::abs(dot(sx, sz)) > tolerance * scale ||
+        std::abs(dot(sy, sz)) > tolerance * scale)
       throw props.error("to_world", "a sphere's to_world may only translate, rotate and scale uniformly");
     center_ = to_world.point(props.get_point("center"));
     radius_ = radius * scale;
@@ -76,7 +77,7 @@ class SphereShape final : public AnalyticShape {
 
   PositionSample sample_position(Vec2 u) const override {
     const SurfaceInteraction si = at_direction(square_to_uniform_sphere(u), kInfinity);
-    return {si.p, si.p_error, si.shading.n, si.uv, 1 / area()};
+    return {si.p, si.p_error, si.ng, si.uv, 1 / area()};
   }
 
   // Seen from outside, only the cone the sphere subtends is sampled,
@@ -97,7 +98,7 @@ class SphereShape final : public AnalyticShape {
     const float sin2 = std::max(0.0f, 1 - local.z * local.z);
     const float t = dist * local.z - std::sqrt(std::max(0.0f, radius_ * radius_ - dist2 * sin2));
     const SurfaceInteraction si = at_direction(normalize(ref + dir * t - center_), kInfinity);
-    return {si.p, si.p_error, si.shading.n, si.uv, uniform_cone_pdf_from_versine(versine)};
+    return {si.p, si.p_error, si.ng, si.uv, uniform_cone_pdf_from_versine(versine)};
   }
 
   float pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const override {
@@ -120,7 +121,7 @@ class SphereShape final : public AnalyticShape {
     const Vec3 normal = flip_normals_ ? -n : n;
     si.ng = normal;
     si.shading = Frame::from_normal(normal);
-    si.uv = {(std::atan2(n.y, n.x) + kPi) * kInv2Pi, std::acos(std::clamp(n.z, -1.0f, 1.0f)) * kInvPi};
+    si.uv = {azimuth(n.x, n.y) * kInv2Pi, std::acos(std::clamp(n.z, -1.0f, 1.0f)) * kInvPi};
     return si;
   }
 

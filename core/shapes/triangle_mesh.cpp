@@ -19,6 +19,9 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
     : mesh_(std::move(mesh)), flip_normals_(flip_normals), kind_(std::move(kind)) {
   for (Vec3& p : mesh_.positions) p = to_world.point(p);
   for (Vec3& n : mesh_.normals) n = normalize(to_world.normal(n));
+  // Embree reads each vertex with a 16-byte load; the spare capacity keeps
+  // the last one's read inside the allocation.
+  mesh_.positions.reserve(mesh_.positions.size() + 1);
   std::vector<float> areas;
   areas.reserve(triangle_count());
   for (size_t i = 0; i < mesh_.indices.size(); i += 3) {
@@ -92,7 +95,7 @@ PositionSample TriangleMesh::sample_position(Vec2 u) const {
   const Vec2 b = square_to_uniform_triangle({u_reused, u.y});
   RayHit hit{0, unsigned(tri), {b.y, 1 - b.x - b.y}};
   const SurfaceInteraction si = interaction(Ray{}, hit);
-  return {si.p, si.p_error, si.shading.n, si.uv, 1 / area_};
+  return {si.p, si.p_error, si.ng, si.uv, 1 / area_};
 }
 
 }  // namespace caustica

@@ -64,6 +64,17 @@ TEST(PerspectiveSensor, SampleWiInvertsGenerateRay) {
   }
 }
 
+TEST(PerspectiveSensor, ClippedPointsCannotConnectToTheLens) {
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><sensor type='perspective'><float name='near_clip' value='1'/>"
+      "<float name='far_clip' value='10'/></sensor></scene>");
+  const Sensor& cam = scene->sensor();
+  EXPECT_FALSE(cam.sample_Wi({{0, 0, 0.5f}, {}, {}}, {}));
+  EXPECT_TRUE(cam.sample_Wi({{0, 0, 5}, {}, {}}, {}));
+  EXPECT_FALSE(cam.sample_Wi({{0, 0, 11}, {}, {}}, {}));
+  EXPECT_FALSE(scene->intersect(cam.generate_ray({384, 288}, {})));  // nothing to hit, near plane respected
+}
+
 // We is normalised: integrated against cos theta over the directions that
 // reach the film it gives 1, which is what lets light paths splat onto it.
 TEST(PerspectiveSensor, ImportanceIntegratesToOne) {

@@ -19,7 +19,8 @@ TEST(FilmBuffer, WeightedMeanAndVariance) {
   EXPECT_FLOAT_EQ(img[5], 1.5f);
   EXPECT_EQ(img[0], 0);  // a pixel without samples stays black
   const auto var = film.variance();
-  EXPECT_FLOAT_EQ(var[3], 1.0f);  // sample variance 2, over 2 samples
+  // sum w^2 (x - mean)^2 / (sum w)^2 * n / (n - 1) = (2.25 + 9 * 0.25) / 16 * 2
+  EXPECT_FLOAT_EQ(var[3], 0.5625f);
   EXPECT_EQ(film.sample_count({1, 0}), 2u);
 }
 

@@ -81,6 +81,12 @@ TEST(PointEmitter, DeltaLightFallsOffWithDistanceSquared) {
   EXPECT_FLOAT_EQ(ls->Li.r, 2);
   EXPECT_FLOAT_EQ(ls->wi.z, 1);
   EXPECT_FLOAT_EQ(light.power().r, 8 * 4 * kPi);
+  const auto le = light.sample_Le({0.1f, 0.2f}, {0.3f, 0.4f});
+  ASSERT_TRUE(le);
+  float pdf_pos = 0, pdf_dir = 0;
+  light.pdf_Le(le->ray, le->n, &pdf_pos, &pdf_dir);
+  EXPECT_EQ(pdf_pos, le->pdf_pos);
+  EXPECT_EQ(pdf_dir, le->pdf_dir);
 }
 
 TEST(ConstantEmitter, IlluminatesFromEveryDirection) {

@@ -88,6 +88,24 @@ TEST(SceneLoader, EveryElementOfTheSubset) {
   EXPECT_NEAR(hit->t, 1, 1e-5f);
 }
 
+// Exported scenes often name nested objects; where the plugin has no
+// parameter of that name the object is an ordinary child.
+TEST(SceneLoader, NamedNestedObjectsAreChildren) {
+  const auto scene = load_scene_string(
+      "<scene version='3.0.0'><bsdf type='diffuse' id='m'/><shape type='cube'><ref id='m' name='bsdf'/></shape>"
+      "<shape type='sphere'><bsdf type='diffuse' name='surface'/></shape></scene>",
+      "named.xml");
+  EXPECT_EQ(scene->shapes().size(), 2u);
+}
+
+TEST(SceneLoader, DirectSampleCountsDefaultToShadingSamples) {
+  const auto scene = load_scene_string(
+      "<scene version='3.0.0'><integrator type='direct'><integer name='shading_samples' value='3'/>"
+      "<integer name='bsdf_samples' value='2'/></integrator></scene>",
+      "direct.xml");
+  EXPECT_THAT(scene->integrator()->describe(), StartsWith("direct emitter_samples=3 bsdf_samples=2"));
+}
+
 TEST(SceneLoader, DefaultsGiveAPerspectiveCameraAndPathTracer) {
   const auto scene = load_scene_string("<scene version='3.0.0'/>", "empty.xml");
   EXPECT_EQ(scene->sensor().film()->width(), 768);
@@ -147,9 +165,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"required parameter", "<scene version='3.0.0'>\n<shape type='obj'/></scene>",
                  "bad.xml:2: shape 'obj' requires parameter 'filename'"},
         BadInput{"misplaced child",
-                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<emitter type='area'/></bsdf></scene>",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<emitter type='area'><rgb name='radiance' value='1'/>"
+                 "</emitter></bsdf></scene>",
                  "bad.xml:3: bsdf 'diffuse' does not take a nested <emitter>"},
-        BadInput{"top-level area emitter", "<scene version='3.0.0'>\n<emitter type='area'/></scene>",
+        BadInput{"missing radiance",
+                 "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='area'/></shape></scene>",
+                 "bad.xml:3: emitter 'area' requires parameter 'radiance'"},
+        BadInput{"top-level area emitter",
+                 "<scene version='3.0.0'>\n<emitter type='area'><rgb name='radiance' value='1'/></emitter></scene>",
                  "bad.xml:2: an area emitter must be nested in a shape"},
         BadInput{"point light in a shape",
                  "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='point'/></shape></scene>",
@@ -174,6 +197,23 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<sensor type='perspective'><transform name='to_world'>\n"
                  "<lookat origin='1, 1, 1' target='1, 1, 1'/></transform></sensor></scene>",
                  "bad.xml:3: lookat: origin and target coincide"},
+        BadInput{"zero up vector",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><transform name='to_world'>\n"
+                 "<lookat origin='1, 1, 1' target='0, 0, 0' up='0, 0, 0'/></transform></sensor></scene>",
+                 "bad.xml:3: lookat: 'up' is zero or parallel to the viewing direction"},
+        BadInput{"short matrix",
+                 "<scene version='3.0.0'>\n<shape type='cube'><transform name='to_world'>\n"
+                 "<matrix value='1 0 0 0 1 0 0 0 1'/></transform></shape></scene>",
+                 "bad.xml:3: <matrix> needs 16 numbers (row-major 4x4), found 9"},
+        BadInput{"sheared sphere",
+                 "<scene version='3.0.0'>\n<shape type='sphere'><transform name='to_world'>\n"
+                 "<matrix value='1 0 0 0  0 1 0.5 0  0 0 1 0  0 0 0 1'/></transform></shape></scene>",
+                 "bad.xml:2: parameter 'to_world' of shape 'sphere': a sphere's to_world may only translate"},
+        BadInput{"huge film",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><film type='hdrfilm'>\n"
+                 "<integer name='width' value='65536'/><integer name='height' value='65536'/></film>"
+                 "</sensor></scene>",
+                 "width x height must be at most 67108864 pixels"},
         BadInput{"two sensors",
                  "<scene version='3.0.0'>\n<sensor type='perspective'/>\n<sensor type='perspective'/>"
                  "</scene>",

@@ -225,7 +225,7 @@ TEST(XmlReader, UpgradesMitsuba0xFiles) {
       "    <string name='fovAxis' value='x'/>\n"
       "    <transform name='toWorld'><lookAt origin='0,0,1' target='0,0,0' up='0,1,0'/></transform>\n"
       "    <sampler type='independent'><integer name='sampleCount' value='16'/></sampler>\n"
-      "    <film type='ldrfilm'/>\n"
+      "    <film type='ldrfilm'><float name='gamma' value='2.2'/><integer name='width' value='8'/></film>\n"
       "  </sensor>\n"
       "  <bsdf type='dielectric'><float name='intIOR' value='1.5'/><float name='extIOR' value='1'/>"
       "<srgb name='specularReflectance' value='0.5'/></bsdf>\n"
@@ -242,6 +242,8 @@ TEST(XmlReader, UpgradesMitsuba0xFiles) {
   EXPECT_EQ(sensor.children[1].children[0].where.line, 5);
   EXPECT_EQ(*sensor.children[2].children[0].attribute("name"), "sample_count");
   EXPECT_EQ(*sensor.children[3].attribute("type"), "hdrfilm");
+  ASSERT_EQ(sensor.children[3].children.size(), 1u);  // gamma dropped, width kept
+  EXPECT_EQ(*sensor.children[3].children[0].attribute("name"), "width");
   const XmlNode& bsdf = root.children[2];
   EXPECT_EQ(*bsdf.children[0].attribute("name"), "int_ior");
   EXPECT_EQ(*bsdf.children[1].attribute("name"), "ext_ior");
