@@ -1,13 +1,12 @@
 // caustica: the command line. See README.md for the commands.
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
 #include "core/cli/info_command.h"
 #include "core/cli/render_command.h"
+#include "core/cli/tonemap_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"caustica: a physically based Monte Carlo renderer"};
@@ -16,10 +15,13 @@ int main(int argc, char** argv) {
   render.add_to(app);
   caustica::InfoCommand info;
   info.add_to(app);
+  caustica::TonemapCommand tonemap;
+  tonemap.add_to(app);
   CLI11_PARSE(app, argc, argv);
   try {
     if (render.chosen()) return render.run();
     if (info.chosen()) return info.run();
+    if (tonemap.chosen()) return tonemap.run();
   } catch (const std::exception& e) {
     std::cerr << "caustica: error: " << e.what() << "\n";
     return 1;

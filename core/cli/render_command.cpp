@@ -1,13 +1,12 @@
 #include "core/cli/render_command.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
+#include <optional>
 #include <sstream>
 
-#include "core/color/display_transform.h"
+#include "core/cli/interrupt.h"
+#include "core/cli/progress_display.h"
 #include "core/image/image_output.h"
 #include "core/render/renderer.h"
 #include "core/scene/scene_loader.h"
@@ -35,12 +34,12 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("-D", defines_, "define a scene parameter: -D name=value")->allow_extra_args(false);
   command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command_->add_option("--seed", seed_, "random seed");
-  command_->add_option("--display", display_, "OpenColorIO display for the PNG");
-  command_->add_option("--view", view_, "OpenColorIO view for the PNG");
-  command_->add_option("--ocio-config", ocio_config_, "OpenColorIO config (default: $OCIO, else caustica's own)");
+  command_->add_option("--exr-format", exr_format_, "half or float (default: the film's component_format)")
+      ->check(CLI::IsMember({"half", "float"}));
   command_->add_option("--debug-pixel", debug_pixel_, "replay one sample of pixel X,Y and print it");
   command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays");
   command_->add_flag("-q,--quiet", quiet_, "print nothing but errors");
+  develop_.add_to(*command_);
 }
 
 namespace {
@@ -50,73 +49,100 @@ std::string replay_command(const std::string& scene, SampleId id, uint64_t seed)
          std::to_string(id.pixel.x) + "," + std::to_string(id.pixel.y) + " --debug-sample " + std::to_string(id.index);
 }
 
+// The EXR's layers: the integrator's channels, then for radiance the
+// first-hit AOVs, the per-pixel variance of the estimate and the number of
+// samples each pixel received.
+Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
+  Image image{film.width(), film.height(), film.channels(), film.resolve()};
+  if (!aovs) return image;
+  const size_t pixels = size_t(film.width()) * film.height();
+  const std::vector<float> aov = aovs->resolve(), variance = film.variance();
+  const size_t na = aovs->channel_count(), nc = film.channel_count();
+  std::vector<std::string> names = film.channels();
+  for (const auto& c : aovs->channels()) names.push_back(c);
+  for (const char* c : {"variance.R", "variance.G", "variance.B", "samples.Y"}) names.push_back(c);
+  const size_t total = names.size();
+  std::vector<float> pixels_out(pixels * total);
+  for (size_t p = 0; p < pixels; ++p) {
+    float* out = &pixels_out[p * total];
+    std::copy_n(&image.pixels[p * nc], nc, out);
+    std::copy_n(&aov[p * na], na, out + nc);
+    std::copy_n(&variance[p * 3], 3, out + nc + na);
+    out[total - 1] = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
+  }
+  return {film.width(), film.height(), names, pixels_out};
+}
+
 }  // namespace
 
+int RenderCommand::replay(const Scene& scene) const {
+  const Film& film = *scene.sensor().film();
+  int x = -1, y = -1;
+  char comma = 0;
+  std::istringstream in(debug_pixel_);
+  if (!(in >> x >> comma >> y) || comma != ',' || x < 0 || y < 0 || x >= film.width() || y >= film.height())
+    throw std::invalid_argument("--debug-pixel expects X,Y inside the film, got '" + debug_pixel_ + "'");
+  const auto values = replay_sample(scene, {x, y}, debug_sample_, seed_);
+  const auto names = scene.integrator()->channels();
+  for (size_t c = 0; c < values.size(); ++c) std::printf("%s = %.9g\n", names[c].c_str(), values[c]);
+  return 0;
+}
+
 int RenderCommand::run() const {
+  // Installed first, so an interrupt while the scene loads still ends in an
+  // image (of the first pass) rather than in nothing.
+  install_interrupt_handler();
   auto scene = load_scene(scene_, parse_defines(defines_));
   if (!integrator_.empty()) scene->set_integrator(make_default_integrator(integrator_));
-  const Film& film_settings = *scene->sensor().film();
+  if (!debug_pixel_.empty()) return replay(*scene);
 
-  if (!debug_pixel_.empty()) {
-    int x = -1, y = -1;
-    char comma = 0;
-    std::istringstream in(debug_pixel_);
-    if (!(in >> x >> comma >> y) || comma != ',' || x < 0 || y < 0 || x >= film_settings.width() ||
-        y >= film_settings.height())
-      throw std::invalid_argument("--debug-pixel expects X,Y inside the film, got '" + debug_pixel_ + "'");
-    const auto values = replay_sample(*scene, {x, y}, debug_sample_, seed_);
-    const auto names = scene->integrator()->channels();
-    for (size_t c = 0; c < values.size(); ++c) std::printf("%s = %.9g\n", names[c].c_str(), values[c]);
-    return 0;
-  }
-
-  std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
+  const std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
   if (exr.extension() != ".exr") throw std::invalid_argument("output must end in .exr: " + exr.string());
-  const DisplayTransform display(ocio_config_.empty() ? default_ocio_config() : std::filesystem::path(ocio_config_),
-                                 display_, view_);
+  std::filesystem::path png = exr;
+  png.replace_extension(".png");
+  // Everything that can fail on bad options fails before the render.
+  const Developer developer = develop_.make(scene->tone_operator());
+  const Film& film_settings = *scene->sensor().film();
 
   RenderOptions options;
   options.spp = spp_;
   options.time_limit = time_;
   options.seed = seed_;
   options.threads = threads_;
+  options.stop = &interrupt_requested();
   FilmBuffer film(film_settings.width(), film_settings.height(), scene->integrator()->channels());
-  const bool tty = isatty(STDERR_FILENO);
-  const auto progress = [&](const RenderProgress& p) {
-    if (quiet_) return;
-    std::string line = p.spp_target ? std::to_string(100 * p.spp_done / p.spp_target) + "% " : "";
-    line += std::to_string(p.spp_done) + (p.spp_target ? "/" + std::to_string(p.spp_target) : "") + " spp, " +
-            std::to_string(int(p.seconds)) + " s, " + std::to_string(p.seconds > 0 ? p.rays / p.seconds * 1e-6 : 0) +
-            " Mrays/s";
-    std::fprintf(stderr, tty ? "\r%-60s" : "%s\n", line.c_str());
-  };
-  const RenderStats stats = render(*scene, options, film, progress);
-  if (tty && !quiet_) std::fprintf(stderr, "\n");
+  const bool radiance = film.channels() == std::vector<std::string>{"R", "G", "B"};
+  std::optional<FilmBuffer> aovs;
+  if (radiance) aovs.emplace(film_settings.width(), film_settings.height(), standard_aov_channels());
+  RenderProgress progress;
+  RenderStats stats;
+  {
+    std::optional<ProgressDisplay> display;
+    if (!quiet_) display.emplace(progress, time_);
+    stats = render(*scene, options, film, aovs ? &*aovs : nullptr, &progress);
+  }
 
-  Image image{film.width(), film.height(), film.channels(), film.resolve()};
+  const Image image = assemble_layers(film, aovs ? &*aovs : nullptr);
   const std::map<std::string, std::string> metadata = {{"caustica:scene", scene_},
                                                        {"caustica:integrator", scene->integrator()->describe()},
                                                        {"caustica:spp", std::to_string(stats.spp)},
                                                        {"caustica:seconds", std::to_string(stats.seconds)},
                                                        {"caustica:seed", std::to_string(seed_)},
+                                                       {"caustica:interrupted", stats.interrupted ? "true" : "false"},
+                                                       {"caustica:develop", developer.describe()},
                                                        {"caustica:version", kVersion}};
-  write_exr(exr, image, metadata, film_settings.half_float());
-
-  std::vector<float> rgb(size_t(image.width) * image.height * 3);
-  const size_t nc = image.channels.size();
-  for (size_t p = 0; p < rgb.size() / 3; ++p)
-    for (size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = c < nc ? image.pixels[p * nc + c] : 0.0f;
-  display.apply(rgb, image.width, image.height);
-  std::filesystem::path png = exr;
-  png.replace_extension(".png");
-  write_png8(png, image.width, image.height, rgb);
+  const bool half = exr_format_.empty() ? film_settings.half_float() : exr_format_ == "half";
+  write_exr(exr, image, metadata, half);
+  write_png(png, image.width, image.height, developer.develop(image), develop_.png_bits());
 
   if (!quiet_) {
     std::printf(
-        "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped -> %s, %s\n",
+        "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped%s "
+        "-> %s, %s\n",
         scene_.c_str(), scene->integrator()->describe().c_str(), film.width(), film.height(), stats.spp, stats.seconds,
         stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6,
-        static_cast<unsigned long long>(stats.dropped), exr.c_str(), png.c_str());
+        static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "", exr.c_str(),
+        png.c_str());
   }
   if (stats.dropped > 0)
     std::fprintf(stderr, "caustica: warning: %llu non-finite samples were dropped; replay the first with:\n  %s\n",

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/cli/develop_options.h"
+
 namespace caustica {
 
 // `caustica render SCENE [-o OUT.exr] [--spp N | --time S] ...`
@@ -15,15 +17,17 @@ class RenderCommand {
   int run() const;
 
  private:
+  int replay(const class Scene& scene) const;
+
   CLI::App* command_ = nullptr;
-  std::string scene_, output_, integrator_, debug_pixel_;
+  std::string scene_, output_, integrator_, debug_pixel_, exr_format_;
   std::vector<std::string> defines_;
   uint32_t spp_ = 0;
   double time_ = 0;
   int threads_ = 0;
   uint64_t seed_ = 0, debug_sample_ = 0;
   bool quiet_ = false;
-  std::string display_, view_, ocio_config_;
+  DevelopOptions develop_;
 };
 
 // Parses "-D name=value" items into a map; throws on a missing '='.

@@ -15,7 +15,8 @@ std::filesystem::path default_ocio_config() {
 }
 
 DisplayTransform::DisplayTransform(const std::filesystem::path& config_path, const std::string& display,
-                                   const std::string& view) {
+                                   const std::string& view, const std::string& look)
+    : look_(look) {
   try {
     const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromFile(config_path.c_str());
     display_ = display.empty() ? config->getDefaultDisplay() : display;
@@ -24,9 +25,16 @@ DisplayTransform::DisplayTransform(const std::filesystem::path& config_path, con
     transform->setSrc(OCIO::ROLE_SCENE_LINEAR);
     transform->setDisplay(display_.c_str());
     transform->setView(view_.c_str());
-    auto cpu = config->getProcessor(transform)->getDefaultCPUProcessor();
+    auto pipeline = OCIO::LegacyViewingPipeline::Create();
+    pipeline->setDisplayViewTransform(transform);
+    if (!look.empty()) {
+      if (!config->getLook(look.c_str())) throw std::runtime_error("no look named '" + look + "'");
+      pipeline->setLooksOverrideEnabled(true);
+      pipeline->setLooksOverride(look.c_str());
+    }
+    auto cpu = pipeline->getProcessor(config)->getDefaultCPUProcessor();
     processor_ = std::shared_ptr<const void>(cpu, cpu.get());
-  } catch (const OCIO::Exception& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error("OpenColorIO config '" + config_path.string() + "': " + e.what());
   }
 }

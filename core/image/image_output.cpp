@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/image/atomic_file.h"
+#include "core/sampling/pcg32.h"
 
 namespace caustica {
 
@@ -36,15 +37,38 @@ void write_exr(const std::filesystem::path& path, const Image& image,
   });
 }
 
-void write_png8(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb) {
-  std::vector<uint8_t> bytes(display_rgb.size());
-  for (size_t i = 0; i < bytes.size(); ++i) {
+std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width, int bits) {
+  if (bits != 8 && bits != 16) throw std::invalid_argument("PNG bit depth must be 8 or 16");
+  const float levels = bits == 8 ? 255.0f : 65535.0f;
+  std::vector<uint16_t> out(display_rgb.size());
+  for (size_t i = 0; i < out.size(); ++i) {
     const float v = std::isfinite(display_rgb[i]) ? std::clamp(display_rgb[i], 0.0f, 1.0f) : 0.0f;
-    bytes[i] = uint8_t(std::lround(v * 255));
+    float noise = 0;
+    if (bits == 8) {
+      const size_t pixel = i / 3;
+      const uint64_t h = mix_bits((uint64_t(pixel % width) << 32) ^ (pixel / width) ^ (uint64_t(i % 3) << 62));
+      // The sum of two uniforms in [0, 1), less 1: triangular on (-1, 1).
+      noise = float(h & 0xffffffu) * 0x1p-24f + float((h >> 32) & 0xffffffu) * 0x1p-24f - 1;
+    }
+    out[i] = uint16_t(std::clamp(std::lround(v * levels + noise), 0L, long(levels)));
   }
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  write_atomically(
-      path, [&](const std::filesystem::path& tmp) { write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data()); });
+  return out;
+}
+
+void write_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb,
+               int bits) {
+  const std::vector<uint16_t> q = quantize(display_rgb, width, bits);
+  if (bits == 8) {
+    const std::vector<uint8_t> bytes(q.begin(), q.end());
+    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+      write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data());
+    });
+  } else {
+    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT16);
+    write_atomically(
+        path, [&](const std::filesystem::path& tmp) { write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT16, q.data()); });
+  }
 }
 
 }  // namespace caustica

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -18,8 +19,14 @@ struct Image {
 void write_exr(const std::filesystem::path& path, const Image& image,
                const std::map<std::string, std::string>& metadata, bool half_float);
 
-// Writes display-referred 8-bit RGB (values in [0, 1] after the display
-// transform; clamped here) to a PNG; atomic.
-void write_png8(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb);
+// Quantises display-referred RGB in [0, 1] to `bits` (8 or 16) per channel.
+// 8-bit output is dithered with triangular noise of +-1 step (a pure function
+// of the pixel, so outputs are reproducible): smooth gradients then show
+// noise finer than the eye resolves instead of bands.
+std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width, int bits);
+
+// Writes display-referred RGB (in [0, 1]) as an 8- or 16-bit PNG; atomic.
+void write_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb,
+               int bits = 8);
 
 }  // namespace caustica

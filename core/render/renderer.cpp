@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/render/aov_evaluator.h"
+
 namespace caustica {
 
 namespace {
@@ -26,43 +28,62 @@ std::vector<Tile> make_tiles(int width, int height) {
   return tiles;
 }
 
+const AovEvaluator& standard_aovs() {
+  static const AovEvaluator evaluator(parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth"));
+  return evaluator;
+}
+
+struct CameraSample {
+  Ray ray;
+  float weight;
+};
+
 // Everything one sample needs; `values` is scratch space of channel size.
-void run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed,
-                std::span<float> values, float* weight) {
+CameraSample run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed,
+                        std::span<float> values) {
   sampler.start_sample(pixel, index, seed);
   const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
   const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
   const Ray ray = scene.sensor().generate_ray(raster, sampler.next_2d());
   scene.integrator()->sample(scene, ray, sampler, values);
-  *weight = fs.weight;
+  return {ray, fs.weight};
 }
 
 void render_pass(const Scene& scene, const std::vector<Tile>& tiles, uint32_t first, uint32_t count, uint64_t seed,
-                 FilmBuffer& film) {
+                 FilmBuffer& film, FilmBuffer* aovs, RenderProgress* progress) {
   struct ThreadState {
     std::unique_ptr<Sampler> sampler;
-    std::vector<float> values;
+    std::vector<float> values, aov_values;
   };
   tbb::enumerable_thread_specific<ThreadState> states([&] {
-    return ThreadState{scene.sensor().sampler()->clone(), std::vector<float>(film.channel_count())};
+    return ThreadState{scene.sensor().sampler()->clone(), std::vector<float>(film.channel_count()),
+                       std::vector<float>(aovs ? aovs->channel_count() : 0)};
   });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
     ThreadState& state = states.local();
-    for (size_t t = range.begin(); t != range.end(); ++t)
+    for (size_t t = range.begin(); t != range.end(); ++t) {
       for (int y = tiles[t].lo.y; y < tiles[t].hi.y; ++y)
         for (int x = tiles[t].lo.x; x < tiles[t].hi.x; ++x)
           for (uint32_t i = first; i < first + count; ++i) {
-            float weight = 0;
-            run_sample(scene, *state.sampler, {x, y}, i, seed, state.values, &weight);
-            film.add_sample({{x, y}, i}, state.values, weight);
+            const CameraSample cs = run_sample(scene, *state.sampler, {x, y}, i, seed, state.values);
+            film.add_sample({{x, y}, i}, state.values, cs.weight);
+            if (aovs && i < kAovSamples) {
+              standard_aovs().evaluate(scene, cs.ray, state.aov_values);
+              aovs->add_sample({{x, y}, i}, state.aov_values, cs.weight);
+            }
           }
+      if (progress)
+        progress->pixel_samples += uint64_t(count) * (tiles[t].hi.x - tiles[t].lo.x) * (tiles[t].hi.y - tiles[t].lo.y);
+    }
   });
 }
 
 }  // namespace
 
-RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer& film,
-                   const std::function<void(const RenderProgress&)>& on_pass) {
+std::vector<std::string> standard_aov_channels() { return standard_aovs().channels(); }
+
+RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer& film, FilmBuffer* aovs,
+                   RenderProgress* progress) {
   const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
   const auto tiles = make_tiles(film.width(), film.height());
@@ -72,6 +93,7 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
+  if (progress) progress->pixel_samples_target = uint64_t(target) * film.width() * film.height();
   scene.integrator()->prepare(scene);
   uint32_t done = 0;
   double last_pass = 0;
@@ -79,15 +101,18 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   uint32_t pass = 1;
   // A pass costs about last_pass scaled by its share of samples.
   uint32_t last_count = 1;
-  while (timed ? elapsed() + last_pass * pass / last_count < options.time_limit || done == 0 : done < target) {
+  const auto stopped = [&] { return options.stop && options.stop->load(); };
+  // The first pass always runs, so even an early stop leaves an image.
+  while (timed ? (elapsed() + last_pass * pass / last_count < options.time_limit && !stopped()) || done == 0
+               : done < target && (!stopped() || done == 0)) {
     const uint32_t count = timed ? pass : std::min(pass, target - done);
     const double pass_start = elapsed();
-    arena.execute([&] { render_pass(scene, tiles, done, count, options.seed, film); });
+    arena.execute([&] { render_pass(scene, tiles, done, count, options.seed, film, aovs, progress); });
     done += count;
     last_pass = elapsed() - pass_start;
     last_count = count;
     pass = std::min<uint32_t>(pass * 2, 16);
-    if (on_pass) on_pass({done, target, elapsed(), scene.rays_traced() - rays_before});
+    if (progress) progress->rays = scene.rays_traced() - rays_before;
   }
 
   RenderStats stats;
@@ -97,14 +122,14 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   stats.rays = scene.rays_traced() - rays_before;
   stats.dropped = film.dropped_samples();
   stats.first_dropped = film.first_dropped();
+  stats.interrupted = stopped() && (timed || done < target);
   return stats;
 }
 
 std::vector<float> replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed) {
   auto sampler = scene.sensor().sampler()->clone();
   std::vector<float> values(scene.integrator()->channels().size());
-  float weight = 0;
-  run_sample(scene, *sampler, pixel, index, seed, values, &weight);
+  run_sample(scene, *sampler, pixel, index, seed, values);
   return values;
 }
 

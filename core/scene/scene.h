@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/camera/sensor.h"
+#include "core/color/tone_operator.h"
 #include "core/geometry/embree_scene.h"
 #include "core/lights/emitter.h"
 #include "core/render/integrator.h"
@@ -40,6 +41,9 @@ class Scene {
   const Sensor& sensor() const { return *sensor_; }
   const std::shared_ptr<Integrator>& integrator() const { return integrator_; }
   void set_integrator(std::shared_ptr<Integrator> integrator) { integrator_ = std::move(integrator); }
+  // The scene's <tonemap>, or null: how its render is developed for display.
+  const std::shared_ptr<ToneOperator>& tone_operator() const { return tone_operator_; }
+  void set_tone_operator(std::shared_ptr<ToneOperator> op) { tone_operator_ = std::move(op); }
   const Bounds3& bounds() const { return bounds_; }
   const std::string& source() const { return source_; }
 
@@ -49,6 +53,7 @@ class Scene {
   std::vector<const Emitter*> infinite_;
   std::shared_ptr<Sensor> sensor_;
   std::shared_ptr<Integrator> integrator_;
+  std::shared_ptr<ToneOperator> tone_operator_;
   std::string source_;
   Bounds3 bounds_;
   std::unique_ptr<EmbreeScene> accel_;

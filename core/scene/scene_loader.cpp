@@ -12,7 +12,7 @@ namespace caustica {
 namespace {
 
 const std::set<std::string> kObjectTags = {"integrator", "sensor", "film",    "sampler", "rfilter",
-                                           "shape",      "bsdf",   "emitter", "texture"};
+                                           "shape",      "bsdf",   "emitter", "texture", "tonemap"};
 const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float},     {"integer", ValueKind::Integer},
                                                      {"boolean", ValueKind::Boolean}, {"string", ValueKind::String},
                                                      {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
@@ -151,6 +151,7 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
   std::vector<std::shared_ptr<Shape>> shapes;
   std::shared_ptr<Sensor> sensor;
   std::shared_ptr<Integrator> integrator;
+  std::shared_ptr<ToneOperator> tone_operator;
   for (const XmlNode& node : root.children) {
     if (!kObjectTags.count(node.tag) && node.tag != "ref")
       throw SceneError(node.where, "unexpected <" + node.tag + "> at the top level of a scene");
@@ -164,14 +165,19 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
     } else if (node.tag == "integrator") {
       if (integrator) throw SceneError(node.where, "a scene may have only one integrator");
       integrator = std::static_pointer_cast<Integrator>(obj.object);
+    } else if (node.tag == "tonemap") {
+      if (tone_operator) throw SceneError(node.where, "a scene may have only one tonemap");
+      tone_operator = std::static_pointer_cast<ToneOperator>(obj.object);
     } else if (node.tag == "emitter" && std::static_pointer_cast<Emitter>(obj.object)->is_area()) {
       throw SceneError(node.where, "an area emitter must be nested in a shape");
     }
   }
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_default_integrator("path");
-  return std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), std::move(integrator),
-                                 source);
+  auto scene = std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor),
+                                       std::move(integrator), source);
+  scene->set_tone_operator(std::move(tone_operator));
+  return scene;
 }
 
 }  // namespace

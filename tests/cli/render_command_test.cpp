@@ -3,11 +3,17 @@
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 namespace caustica {
 namespace {
@@ -50,15 +56,31 @@ TEST(RenderCommand, WritesExrAndPngAndASummary) {
   ASSERT_TRUE(in);
   const OIIO::ImageSpec& spec = in->spec();
   EXPECT_EQ(spec.width, 24);
-  EXPECT_EQ(spec.nchannels, 3);
+  const std::vector<std::string> layers = {"R",          "G",          "B",          "albedo.R", "albedo.G",
+                                           "albedo.B",   "normal.X",   "normal.Y",   "normal.Z", "depth.T",
+                                           "variance.R", "variance.G", "variance.B", "samples.Y"};
+  // OpenEXR stores channels sorted by name (beauty first); compare as sets.
+  std::vector<std::string> names = spec.channelnames;
+  std::vector<std::string> expected = layers;
+  std::sort(names.begin(), names.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(names, expected);
+  EXPECT_EQ(spec.channelnames[0], "R");
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::HALF);  // the scene's film asks for float16 by default
   EXPECT_EQ(spec.get_string_attribute("caustica:spp"), "2");
   EXPECT_EQ(spec.get_string_attribute("caustica:seed"), "3");
-  std::vector<float> pixels(24 * 24 * 3);
-  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data()));
+  EXPECT_EQ(spec.get_string_attribute("caustica:interrupted"), "false");
+  EXPECT_EQ(spec.get_string_attribute("caustica:develop"), "none exposure=0.000000 display=sRGB view=Standard");
+  std::vector<float> pixels(24 * 24 * 14);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 14, OIIO::TypeDesc::FLOAT, pixels.data()));
   double sum = 0;
-  for (float v : pixels) {
-    EXPECT_TRUE(std::isfinite(v));
-    sum += v;
+  const int samples = spec.channelindex("samples.Y");
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(pixels[i]));
+    if (i % 14 < 3) sum += pixels[i];
+    if (int(i % 14) == samples) {
+      EXPECT_EQ(pixels[i], 2);  // samples per pixel
+    }
   }
   EXPECT_GT(sum, 0);
   auto png = OIIO::ImageInput::open((temp_dir() / "box.png").string());
@@ -93,6 +115,83 @@ TEST(RenderCommand, ErrorsNameTheProblem) {
               HasSubstr("cornell-box.xml:13: parameter 'max_depth' of integrator 'path': must be -1"));
   EXPECT_THAT(run("render " + kCornell + " --debug-pixel 9999,1").output, HasSubstr("--debug-pixel expects X,Y"));
   EXPECT_NE(run("render /nonexistent.xml").status, 0);
+}
+
+TEST(RenderCommand, DevelopmentOptions) {
+  const auto exr = temp_dir() / "dev.exr";
+  const CommandResult r =
+      run("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=16 --exr-format float --tonemap filmic" +
+          " --exposure 1 --view ACES --look Bright --png-bits 16 -q");
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::FLOAT);
+  EXPECT_EQ(in->spec().get_string_attribute("caustica:develop"),
+            "filmic bias=2.000000 white=11.200000 exposure=1.000000 display=sRGB view=ACES look=Bright");
+  auto png = OIIO::ImageInput::open((temp_dir() / "dev.png").string());
+  ASSERT_TRUE(png);
+  EXPECT_EQ(png->spec().format, OIIO::TypeDesc::UINT16);
+  EXPECT_THAT(run("render " + kCornell + " --tonemap drago").output,
+              HasSubstr("unknown tone operator 'drago' (available: aces, filmic, none, reinhard)"));
+  EXPECT_THAT(run("render " + kCornell + " --view Cinema").output, HasSubstr("OpenColorIO config"));
+}
+
+// Re-developing a render gives the same PNG as developing it at render time.
+TEST(TonemapCommand, RedevelopsWithoutRendering) {
+  const auto exr = temp_dir() / "redevelop.exr";
+  ASSERT_EQ(run("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=16 --exr-format float" +
+                " --tonemap reinhard -q")
+                .status,
+            0);
+  const auto again = temp_dir() / "again.png";
+  const CommandResult r = run("tonemap " + exr.string() + " -o " + again.string() + " --tonemap reinhard");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("reinhard key=0.180000"));
+  const auto pixels = [](const std::filesystem::path& p) {
+    auto in = OIIO::ImageInput::open(p.string());
+    std::vector<uint8_t> data(16 * 16 * 3);
+    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, data.data());
+    return data;
+  };
+  EXPECT_EQ(pixels(again), pixels(temp_dir() / "redevelop.png"));
+  const auto brighter = temp_dir() / "brighter.png";
+  ASSERT_EQ(run("tonemap " + exr.string() + " -o " + brighter.string() + " --exposure 2").status, 0);
+  EXPECT_NE(pixels(brighter), pixels(again));
+  EXPECT_THAT(run("tonemap /nonexistent.exr -o x.png").output, HasSubstr("nonexistent.exr"));
+}
+
+// Ctrl-C stops at the next pass and still writes a valid image, with the
+// number of samples it really has.
+TEST(RenderCommand, InterruptWritesThePartialImage) {
+  const auto exr = temp_dir() / "interrupted.exr";
+  std::filesystem::remove(exr);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string out = "-o" + exr.string();
+    execl(CAUSTICA_BINARY, CAUSTICA_BINARY, "render", kCornell.c_str(), out.c_str(), "--spp", "100000", "-D", "res=32",
+          "--threads", "1", "-q", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Whenever it arrives, the interrupt ends the render after at least one
+  // pass and long before 100000 samples; the pause only lets it get going.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in);
+  const int spp = std::stoi(in->spec().get_string_attribute("caustica:spp"));
+  EXPECT_GT(spp, 0);
+  EXPECT_LT(spp, 100000);
+  EXPECT_EQ(in->spec().get_string_attribute("caustica:interrupted"), "true");
+  std::vector<float> pixels(32 * 32 * 14);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 14, OIIO::TypeDesc::FLOAT, pixels.data()));
+  const int samples = in->spec().channelindex("samples.Y");
+  ASSERT_GE(samples, 0);
+  for (size_t i = samples; i < pixels.size(); i += 14) EXPECT_EQ(pixels[i], float(spp));
 }
 
 // A failed render must not touch an existing output.

@@ -106,6 +106,19 @@ TEST(SceneLoader, DirectSampleCountsDefaultToShadingSamples) {
   EXPECT_THAT(scene->integrator()->describe(), StartsWith("direct emitter_samples=3 bsdf_samples=2"));
 }
 
+TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
+  const auto scene = load_scene_string(
+      "<scene version='3.0.0'><tonemap type='reinhard'><float name='key' value='0.3'/>"
+      "<float name='exposure' value='-1'/></tonemap></scene>",
+      "tonemap.xml");
+  ASSERT_TRUE(scene->tone_operator());
+  EXPECT_EQ(scene->tone_operator()->describe(), "reinhard key=0.300000 white=0.000000");
+  EXPECT_EQ(scene->tone_operator()->exposure(), -1);
+  EXPECT_FALSE(load_scene_string("<scene version='3.0.0'/>", "plain.xml")->tone_operator());
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<tonemap type='reinhard'/>\n<tonemap type='none'/></scene>"),
+              HasSubstr("test.xml:3: a scene may have only one tonemap"));
+}
+
 TEST(SceneLoader, DefaultsGiveAPerspectiveCameraAndPathTracer) {
   const auto scene = load_scene_string("<scene version='3.0.0'/>", "empty.xml");
   EXPECT_EQ(scene->sensor().film()->width(), 768);

@@ -1,0 +1,35 @@
+#include "core/cli/develop_options.h"
+
+#include "core/registry/properties.h"
+
+namespace caustica {
+
+void DevelopOptions::add_to(CLI::App& command) {
+  command.add_option("--tonemap", tonemap_, "tone operator: " + join_names(Registry::instance().names("tonemap")));
+  command.add_option("--exposure", exposure_, "exposure in stops, before the tone operator");
+  command.add_option("--display", display_, "OpenColorIO display (default: the config's)");
+  command.add_option("--view", view_, "OpenColorIO view (default: the display's first)");
+  command.add_option("--look", look_, "OpenColorIO look to apply");
+  command.add_option("--ocio-config", ocio_config_, "OpenColorIO config (default: $OCIO, else caustica's own)");
+  command.add_option("--png-bits", png_bits_, "PNG bit depth, 8 (dithered) or 16")->check(CLI::IsMember({8, 16}));
+}
+
+Developer DevelopOptions::make(const std::shared_ptr<ToneOperator>& scene_default) const {
+  std::shared_ptr<ToneOperator> op;
+  if (!tonemap_.empty()) {
+    const PluginInfo* info = Registry::instance().find("tonemap", tonemap_);
+    if (!info)
+      throw std::invalid_argument("unknown tone operator '" + tonemap_ +
+                                  "' (available: " + join_names(Registry::instance().names("tonemap")) + ")");
+    op = Registry::instance().create_default<ToneOperator>("tonemap", tonemap_, {"--tonemap", 0});
+  } else {
+    op = scene_default ? scene_default
+                       : Registry::instance().create_default<ToneOperator>("tonemap", "none", {"--tonemap", 0});
+  }
+  if (exposure_) op->set_exposure(*exposure_);
+  const std::filesystem::path config =
+      ocio_config_.empty() ? default_ocio_config() : std::filesystem::path(ocio_config_);
+  return Developer(op, DisplayTransform(config, display_, view_, look_));
+}
+
+}  // namespace caustica

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/color/developer.h"
+
+namespace caustica {
+
+// The command-line settings that turn a render into a PNG, shared by
+// `render` and `tonemap`: --tonemap, --exposure, --display, --view, --look,
+// --ocio-config and --png-bits.
+class DevelopOptions {
+ public:
+  void add_to(CLI::App& command);
+  // The --tonemap operator, else `scene_default`, else `none`; --exposure
+  // replaces the operator's own exposure.
+  Developer make(const std::shared_ptr<ToneOperator>& scene_default) const;
+  int png_bits() const { return png_bits_; }
+
+ private:
+  std::string tonemap_, display_, view_, look_, ocio_config_;
+  std::optional<float> exposure_;
+  int png_bits_ = 8;
+};
+
+}  // namespace caustica

@@ -1,0 +1,43 @@
+#include "core/color/developer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace caustica {
+
+std::array<size_t, 3> beauty_channels(const Image& image) {
+  const auto find = [&](const char* name) {
+    return size_t(std::find(image.channels.begin(), image.channels.end(), name) - image.channels.begin());
+  };
+  const std::array<size_t, 3> named = {find("R"), find("G"), find("B")};
+  if (named[0] < image.channels.size() && named[1] < image.channels.size() && named[2] < image.channels.size())
+    return named;
+  return {0, 1, 2};
+}
+
+std::vector<float> Developer::develop(const Image& image) const {
+  const size_t pixels = size_t(image.width) * image.height;
+  const size_t nc = image.channels.size();
+  const float scale = std::exp2(op_->exposure());
+  const auto source = beauty_channels(image);
+  std::vector<float> rgb(pixels * 3, 0.0f);
+  for (size_t p = 0; p < pixels; ++p)
+    for (size_t c = 0; c < 3; ++c)
+      if (source[c] < nc) rgb[p * 3 + c] = image.pixels[p * nc + source[c]] * scale;
+  op_->apply(rgb);
+  display_.apply(rgb, image.width, image.height);
+  // Display transforms do not clamp, and a studio config may produce NaN
+  // from out-of-range input; neither may reach the quantiser.
+  for (float& v : rgb) v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+  return rgb;
+}
+
+std::string Developer::describe() const {
+  std::string s = op_->describe() + " exposure=" + std::to_string(op_->exposure()) + " display=" + display_.display() +
+                  " view=" + display_.view();
+  if (!display_.look().empty()) s += " look=" + display_.look();
+  return s;
+}
+
+}  // namespace caustica

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/color/display_transform.h"
+#include "core/color/tone_operator.h"
+#include "core/image/image_output.h"
+
+namespace caustica {
+
+// Turns a scene-referred render into display-referred pixels:
+// exposure (2^EV) -> tone operator -> OpenColorIO display/view -> clamp.
+// Quantisation (with dithering) happens when the PNG is written.
+class Developer {
+ public:
+  Developer(std::shared_ptr<ToneOperator> op, DisplayTransform display)
+      : op_(std::move(op)), display_(std::move(display)) {}
+
+  // Takes the image's R, G, B channels (else its first three, as for AOV
+  // renders) as linear Rec.709; returns display-encoded RGB in [0, 1],
+  // pixel-interleaved.
+  std::vector<float> develop(const Image& image) const;
+  std::string describe() const;
+
+ private:
+  std::shared_ptr<ToneOperator> op_;
+  DisplayTransform display_;
+};
+
+// Indices of the channels named R, G and B, else of the first three.
+std::array<size_t, 3> beauty_channels(const Image& image);
+
+}  // namespace caustica

@@ -1,0 +1,77 @@
+// reinhard: the global photographic tone reproduction operator (Reinhard et
+// al. 2002). With Lw a pixel's luminance and L_avg the image's log-average
+// luminance exp(mean(log(delta + Lw))), the scaled luminance
+//   L = key / L_avg * Lw
+// is compressed to
+//   Ld = L (1 + L / L_white^2) / (1 + L),
+// and the pixel's RGB is scaled by Ld / Lw (hue is kept). Values at L_white
+// map to 1; L_white = 0 takes the image's largest scaled luminance.
+//
+// Parameters
+//   key       float  0.18  where the log-average luminance lands (middle grey)
+//   white     float  0     scaled luminance that maps to white; 0: the image maximum
+//   exposure  float  0     stops
+//
+//   <tonemap type="reinhard"><float name="key" value="0.18"/></tonemap>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/color/tone_operator.h"
+#include "core/math/color.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+class ReinhardTonemap final : public ToneOperator {
+ public:
+  explicit ReinhardTonemap(const Properties& props)
+      : ToneOperator(props), key_(props.get_float("key")), white_(props.get_float("white")) {
+    if (!(key_ > 0)) throw props.error("key", "must be positive");
+    if (!(white_ >= 0)) throw props.error("white", "must not be negative");
+  }
+
+  void apply(std::vector<float>& rgb) const override {
+    for (float& v : rgb) v = sanitize_radiance(v);
+    const size_t pixels = rgb.size() / 3;
+    if (pixels == 0) return;
+    // Small offset so black pixels do not send the log-average to zero.
+    constexpr double kDelta = 1e-6;
+    double log_sum = 0;
+    for (size_t p = 0; p < pixels; ++p) log_sum += std::log(kDelta + luminance(rgb, p));
+    const double log_average = std::exp(log_sum / double(pixels));
+    const double scale = key_ / log_average;
+    double white = white_;
+    if (white == 0)
+      for (size_t p = 0; p < pixels; ++p) white = std::max(white, scale * luminance(rgb, p));
+    const double inv_white2 = white > 0 ? 1 / (white * white) : 0;
+    for (size_t p = 0; p < pixels; ++p) {
+      const double Lw = luminance(rgb, p);
+      if (Lw <= 0) continue;
+      const double L = scale * Lw;
+      const double Ld = L * (1 + L * inv_white2) / (1 + L);
+      for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = float(std::min(1.0, rgb[p * 3 + c] * (Ld / Lw)));
+    }
+  }
+
+  std::string describe() const override {
+    return "reinhard key=" + std::to_string(key_) + " white=" + std::to_string(white_);
+  }
+
+ private:
+  static double luminance(const std::vector<float>& rgb, size_t p) {
+    return Color(rgb[p * 3], rgb[p * 3 + 1], rgb[p * 3 + 2]).luminance();
+  }
+
+  float key_, white_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(ReinhardTonemap, "tonemap", "reinhard",
+                         tone_operator_params({{"key", ParamType::Float, "0.18", "key value (middle grey)"},
+                                               {"white", ParamType::Float, "0", "white point; 0: image maximum"}}),
+                         {});
+
+}  // namespace caustica

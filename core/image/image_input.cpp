@@ -1,0 +1,23 @@
+#include "core/image/image_input.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <stdexcept>
+
+namespace caustica {
+
+Image read_image(const std::filesystem::path& path, std::map<std::string, std::string>* metadata) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw std::runtime_error("cannot read image '" + path.string() + "': " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  Image image{spec.width, spec.height, spec.channelnames, {}};
+  image.pixels.resize(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw std::runtime_error("cannot read image '" + path.string() + "': " + in->geterror());
+  if (metadata)
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+      if (p.type() == OIIO::TypeDesc::STRING) (*metadata)[p.name().string()] = p.get_string();
+  return image;
+}
+
+}  // namespace caustica

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "core/image/image_output.h"
+
+namespace caustica {
+
+// Reads every channel of an image file as float, and its string metadata.
+// Throws std::runtime_error naming the file.
+Image read_image(const std::filesystem::path& path, std::map<std::string, std::string>* metadata = nullptr);
+
+}  // namespace caustica

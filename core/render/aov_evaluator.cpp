@@ -1,0 +1,98 @@
+#include "core/render/aov_evaluator.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/bsdf/surface_bsdf.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+namespace {
+
+const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
+                                                  {"sh_normal", AovKind::ShNormal},
+                                                  {"geo_normal", AovKind::GeoNormal},
+                                                  {"position", AovKind::Position},
+                                                  {"uv", AovKind::Uv},
+                                                  {"depth", AovKind::Depth}};
+
+const char* suffixes(AovKind kind) {
+  switch (kind) {
+    case AovKind::Albedo:
+      return "RGB";
+    case AovKind::ShNormal:
+    case AovKind::GeoNormal:
+    case AovKind::Position:
+      return "XYZ";
+    case AovKind::Uv:
+      return "UV";
+    case AovKind::Depth:
+      return "T";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<AovSpec> parse_aov_list(const std::string& text) {
+  std::vector<AovSpec> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos || colon == 0) throw std::invalid_argument("'" + item + "' is not name:kind");
+    const std::string kind = item.substr(colon + 1);
+    const auto it = std::find_if(std::begin(kKinds), std::end(kKinds), [&](const auto& k) { return kind == k.first; });
+    if (it == std::end(kKinds))
+      throw std::invalid_argument("unknown kind '" + kind +
+                                  "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth)");
+    out.push_back({item.substr(0, colon), it->second});
+    start = end + 1;
+  }
+  return out;
+}
+
+std::vector<std::string> AovEvaluator::channels() const {
+  std::vector<std::string> out;
+  for (const AovSpec& a : aovs_)
+    for (const char* c = suffixes(a.kind); *c; ++c) out.push_back(a.name + "." + *c);
+  return out;
+}
+
+void AovEvaluator::evaluate(const Scene& scene, const Ray& ray, std::span<float> out) const {
+  std::fill(out.begin(), out.end(), 0.0f);
+  const auto si = scene.intersect(ray);
+  if (!si) return;
+  size_t c = 0;
+  const auto put = [&](Vec3 v, int n) {
+    for (int i = 0; i < n; ++i) out[c++] = v[i];
+  };
+  for (const AovSpec& a : aovs_) {
+    switch (a.kind) {
+      case AovKind::Albedo: {
+        const Color albedo = SurfaceBsdf(*si->shape->bsdf(), *si, TransportMode::Radiance).albedo(-ray.d);
+        put({albedo.r, albedo.g, albedo.b}, 3);
+        break;
+      }
+      case AovKind::ShNormal:
+        put(si->shading.n, 3);
+        break;
+      case AovKind::GeoNormal:
+        put(si->ng, 3);
+        break;
+      case AovKind::Position:
+        put(si->p, 3);
+        break;
+      case AovKind::Uv:
+        put({si->uv.x, si->uv.y, 0}, 2);
+        break;
+      case AovKind::Depth:
+        put({si->t, 0, 0}, 1);
+        break;
+    }
+  }
+}
+
+}  // namespace caustica

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/geometry/ray.h"
+
+namespace caustica {
+
+class Scene;
+
+enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth };
+
+struct AovSpec {
+  std::string name;
+  AovKind kind;
+};
+
+// Parses "name:kind,name:kind" (kinds: albedo, sh_normal, geo_normal,
+// position, uv, depth); throws std::invalid_argument naming the bad item.
+std::vector<AovSpec> parse_aov_list(const std::string& text);
+
+// Values at the first surface a ray meets: noise-free inputs for denoisers
+// and compositing. Misses write zeros.
+class AovEvaluator {
+ public:
+  explicit AovEvaluator(std::vector<AovSpec> aovs) : aovs_(std::move(aovs)) {}
+
+  // Channel names: name.R/G/B, name.X/Y/Z, name.U/V or name.T (depth).
+  std::vector<std::string> channels() const;
+  void evaluate(const Scene& scene, const Ray& ray, std::span<float> out) const;
+
+ private:
+  std::vector<AovSpec> aovs_;
+};
+
+}  // namespace caustica
