@@ -17,6 +17,7 @@ struct SurfaceInteraction {
   Vec3 ng;        // geometric normal, unit length, on the shape's outward side
   Frame shading;  // shading frame; shading.n lies on ng's side
   Vec2 uv;
+  Vec3 dpdu, dpdv;  // surface tangents along the (u, v) parametrisation
   float t = kInfinity;
   const Shape* shape = nullptr;
 

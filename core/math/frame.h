@@ -23,6 +23,17 @@ struct Frame {
     return {Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3(b, sign + n.y * n.y * a, -n.y), n};
   }
 
+  // The frame around n whose s axis follows the tangent's direction (so
+  // anisotropic materials and tangent-space maps follow the surface's
+  // parametrisation); falls back to from_normal for a degenerate tangent.
+  static Frame from_normal_and_tangent(Vec3 n, Vec3 tangent) {
+    const Vec3 projected = tangent - n * dot(n, tangent);
+    const float len2 = squared_length(projected);
+    if (!(len2 > 1e-20f * squared_length(tangent)) || !std::isfinite(len2)) return from_normal(n);
+    const Vec3 s = projected / std::sqrt(len2);
+    return {s, cross(n, s), n};
+  }
+
   Vec3 to_local(Vec3 v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
   Vec3 to_world(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }
 };

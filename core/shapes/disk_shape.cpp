@@ -81,8 +81,12 @@ class DiskShape final : public AnalyticShape {
     si.t = t;
     si.shape = this;
     si.ng = normal_;
-    si.shading = Frame::from_normal(normal_);
-    si.uv = {std::sqrt(xy.x * xy.x + xy.y * xy.y), azimuth(xy.x, xy.y) * kInv2Pi};
+    const float r = std::sqrt(xy.x * xy.x + xy.y * xy.y), phi = azimuth(xy.x, xy.y);
+    si.uv = {r, phi * kInv2Pi};
+    // u = r, v = phi / 2 pi.
+    si.dpdu = to_world_.vector({std::cos(phi), std::sin(phi), 0});
+    si.dpdv = to_world_.vector({-std::sin(phi), std::cos(phi), 0}) * (2 * kPi * r);
+    si.shading = Frame::from_normal_and_tangent(normal_, si.dpdu);
     return si;
   }
 

@@ -120,8 +120,13 @@ class SphereShape final : public AnalyticShape {
     si.shape = this;
     const Vec3 normal = flip_normals_ ? -n : n;
     si.ng = normal;
-    si.shading = Frame::from_normal(normal);
     si.uv = {azimuth(n.x, n.y) * kInv2Pi, std::acos(std::clamp(n.z, -1.0f, 1.0f)) * kInvPi};
+    // u = phi / 2 pi, v = theta / pi.
+    const float sin_theta = std::sqrt(std::max(0.0f, n.x * n.x + n.y * n.y));
+    si.dpdu = Vec3(-offset.y, offset.x, 0) * (2 * kPi);
+    si.dpdv = sin_theta > 0 ? Vec3(n.z * n.x / sin_theta, n.z * n.y / sin_theta, -sin_theta) * (kPi * radius_)
+                            : Vec3(kPi * radius_, 0, 0);
+    si.shading = Frame::from_normal_and_tangent(normal, si.dpdu);
     return si;
   }
 

@@ -1,5 +1,6 @@
 #include "core/shapes/triangle_mesh.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "core/registry/properties.h"
@@ -82,8 +83,21 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const RayHit& hit) 
     }
   }
   si.ng = ng;
-  si.shading = Frame::from_normal(ns);
   si.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[i0] * b0 + mesh_.uvs[i1] * b1 + mesh_.uvs[i2] * b2;
+  // Tangents from the uv parametrisation (barycentric when there are no uvs).
+  const Vec2 uv0 = mesh_.uvs.empty() ? Vec2(0, 0) : mesh_.uvs[i0], uv1 = mesh_.uvs.empty() ? Vec2(1, 0) : mesh_.uvs[i1],
+             uv2 = mesh_.uvs.empty() ? Vec2(0, 1) : mesh_.uvs[i2];
+  const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+  const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+  const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+  if (det != 0 && std::isfinite(1 / det)) {
+    si.dpdu = (dp02 * duv12.y - dp12 * duv02.y) / det;
+    si.dpdv = (dp12 * duv02.x - dp02 * duv12.x) / det;
+  } else {
+    si.dpdu = p1 - p0;
+    si.dpdv = p2 - p0;
+  }
+  si.shading = Frame::from_normal_and_tangent(ns, si.dpdu);
   (void)ray;
   return si;
 }

@@ -35,7 +35,8 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // its error is noise in the outer integrand, and if that noise exceeded the
 // outer tolerance the outer integral would refine to the maximum level all
 // over the bin.
-constexpr int kMaxLevel = 24;
+// Capped so that a steep peak cannot make refinement exponential in cost.
+constexpr int kMaxLevel = 16;
 // Panels of the first, non-adaptive pass: enough nodes that a pdf which is
 // small at the bin's centre and edges is not mistaken for zero.
 constexpr int kFirstPanels = 4;
@@ -50,6 +51,8 @@ constexpr double kOuterTolerance = 1e-4;
 // dividing by cos(theta) at the horizon). The shift is large enough to move a
 // float coordinate, and its effect on the integral is of the same order.
 constexpr double kEdgeInset = 1e-5;
+// Absolute tolerance per unit of domain length.
+constexpr double kAbsoluteFloor = 1e-9;
 
 // A panel is accepted when its error estimate is within the tolerance relative
 // to its own value, or within its share (by width) of the absolute tolerance of
@@ -89,7 +92,10 @@ double integrate_1d(const F& f, double a, double b, double rel_tol) {
     coarse[p] = step / 3 * (fx[2 * p] + 4 * fx[2 * p + 1] + fx[2 * p + 2]);
     total += coarse[p];
   }
-  const double abs_tol = rel_tol * std::abs(total) / kFirstPanels;
+  // The floor stops refinement of a panel whose coarse estimate is zero (a
+  // peak between the nodes, or nothing at all) once its error is negligible
+  // next to any density a test compares against.
+  const double abs_tol = std::max(rel_tol * std::abs(total) / kFirstPanels, kAbsoluteFloor * (b - a));
   double sum = 0;
   for (int p = 0; p < kFirstPanels; ++p) {
     const double x0 = a + 2 * p * step;

@@ -1,0 +1,68 @@
+#include "core/bsdf/microfacet.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/bsdf_checks.h"
+
+namespace caustica {
+namespace {
+
+using Type = MicrofacetDistribution::Type;
+
+struct Case {
+  Type type;
+  float alpha_u, alpha_v;
+};
+
+const Case kCases[] = {{Type::GGX, 0.1f, 0.1f},      {Type::GGX, 0.5f, 0.5f},      {Type::GGX, 0.05f, 0.6f},
+                       {Type::Beckmann, 0.1f, 0.1f}, {Type::Beckmann, 0.7f, 0.7f}, {Type::Beckmann, 0.3f, 0.05f}};
+const float kThetas[] = {0.0f, 0.8f, 1.5f};
+// Chi-square tests in this file: every case at every angle, 1% overall.
+const double kAlpha = test::sidak_alpha(0.01, 6 * 3);
+
+class Microfacet : public testing::TestWithParam<Case> {};
+
+// The projected microfacet area is the macro-surface's: integral of D cos = 1.
+TEST_P(Microfacet, ProjectedAreaIsOne) {
+  const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u, GetParam().alpha_v);
+  const double integral =
+      test::integrate_sphere([&](const Vec3& m) { return double(d.D(m)) * std::max(0.0f, m.z); }, 80, 80);
+  EXPECT_NEAR(integral, 1.0, 2e-3);
+}
+
+// Smith masking is consistent with D: the visible projected area of the
+// microfacets seen from wo is the macro-surface's, wo.z.
+TEST_P(Microfacet, VisibleAreaMatchesMasking) {
+  const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u, GetParam().alpha_v);
+  for (float theta : kThetas) {
+    const Vec3 wo = test::direction(theta, 0.7f);
+    const double visible = test::integrate_sphere(
+        [&](const Vec3& m) { return double(d.G1(wo, m)) * std::max(0.0f, dot(wo, m)) * d.D(m); }, 80, 80);
+    EXPECT_NEAR(visible, wo.z, 3e-3) << "theta " << theta;
+  }
+}
+
+TEST_P(Microfacet, SamplesFollowThePdf) {
+  const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u, GetParam().alpha_v);
+  for (float theta : kThetas) {
+    const Vec3 wi = test::direction(theta, 0.7f);
+    EXPECT_NEAR(test::integrate_sphere([&](const Vec3& m) { return double(d.pdf(wi, m)); }, 80, 80), 1.0, 3e-3);
+    const auto chi2 = test::chi2_test_sphere(
+        [&](test::UniformSource& u) -> std::optional<Vec3> { return d.sample(wi, u.next_2d()); },
+        [&](const Vec3& m) { return double(d.pdf(wi, m)); }, {.sample_count = 300000, .bins_u = 40, .bins_v = 40});
+    EXPECT_GT(chi2.p_value, kAlpha) << "theta " << theta << "\n" << chi2.report;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, Microfacet, testing::ValuesIn(kCases));
+
+TEST(Microfacet, ParsesItsNames) {
+  EXPECT_EQ(MicrofacetDistribution::parse_type("ggx"), Type::GGX);
+  EXPECT_EQ(MicrofacetDistribution::parse_type("beckmann"), Type::Beckmann);
+  EXPECT_THROW(MicrofacetDistribution::parse_type("phong"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace caustica
