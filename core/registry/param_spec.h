@@ -5,7 +5,8 @@
 
 namespace caustica {
 
-enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform };
+// Ior: an index of refraction, a number or a material name such as "bk7".
+enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform, Ior };
 
 const char* to_string(ParamType t);
 

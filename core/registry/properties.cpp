@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/bsdf/ior.h"
+
 namespace caustica {
 
 namespace {
@@ -111,6 +113,28 @@ Vec3 Properties::get_vector(const std::string& name) const {
 
 Transform Properties::get_transform(const std::string& name) const {
   return std::get<Transform>(value_or_default(name, ParamType::Transform).value);
+}
+
+float Properties::get_ior(const std::string& name) const {
+  const PropertyValue v = value_or_default(name, ParamType::Ior);
+  float ior = 0;
+  if (v.kind == ValueKind::String) {
+    const std::string& text = std::get<std::string>(v.value);
+    if (const auto known = named_ior(text)) {
+      ior = *known;
+    } else {
+      // Defaults are written as text, so a default of "1.5" arrives here too.
+      try {
+        ior = float(std::get<double>(parse_value_text(ValueKind::Float, text, v.where).value));
+      } catch (const SceneError&) {
+        throw error(name, "unknown index of refraction '" + text + "' (known: " + join_names(ior_names()) + ")");
+      }
+    }
+  } else {
+    ior = v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
+  }
+  if (!(ior >= 1)) throw error(name, "an index of refraction must be at least 1");
+  return ior;
 }
 
 std::shared_ptr<Texture> Properties::get_texture(const std::string& name) const {

@@ -39,6 +39,8 @@ class Properties {
   Vec3 get_vector(const std::string& name) const;
   Transform get_transform(const std::string& name) const;
   std::shared_ptr<Texture> get_texture(const std::string& name) const;
+  // A number, or a name from the table of known indices of refraction.
+  float get_ior(const std::string& name) const;
 
   template <class T>
   std::vector<std::shared_ptr<T>> children(const std::string& category) const {

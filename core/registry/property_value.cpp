@@ -129,6 +129,8 @@ bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_cate
       return given == ValueKind::Vector || given == ValueKind::Point;
     case ParamType::Transform:
       return given == ValueKind::Transform;
+    case ParamType::Ior:
+      return given == ValueKind::Float || given == ValueKind::Integer || given == ValueKind::String;
   }
   return false;
 }
@@ -152,6 +154,8 @@ ValueKind default_kind(ParamType t) {
       return ValueKind::Vector;
     case ParamType::Transform:
       return ValueKind::Transform;
+    case ParamType::Ior:
+      return ValueKind::String;
   }
   return ValueKind::Float;
 }

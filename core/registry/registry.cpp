@@ -24,6 +24,8 @@ const char* to_string(ParamType t) {
       return "vector";
     case ParamType::Transform:
       return "transform";
+    case ParamType::Ior:
+      return "float or IOR name";
   }
   return "?";
 }
