@@ -55,6 +55,49 @@ float MicrofacetDistribution::G(Vec3 wo, Vec3 wi, Vec3 m) const {
   return 1 / (1 + lambda(wo) + lambda(wi));
 }
 
+namespace {
+
+// The slope x of a visible Beckmann microfacet along the azimuth of a
+// direction at polar angle theta, in the configuration stretched to
+// alpha = 1 (Heitz and d'Eon 2014). Its density is proportional to
+// (cos - x sin) exp(-x^2) for x below cot(theta); the cumulative
+//   C(x) = cos (1 + erf x) / 2 + sin exp(-x^2) / (2 sqrt(pi))
+// is inverted by Newton's method kept inside a bisection bracket. With
+// cos = 1, sin = 0 this is the inverse of the Gaussian cumulative.
+double beckmann_visible_slope(double cos_theta, double sin_theta, double u) {
+  constexpr double kInvSqrtPi = 0.56418958354775628695;
+  // Beyond |x| = 6 the Gaussian holds less than 1e-17 of the mass.
+  double lo = -6, hi = 6;
+  if (sin_theta > 0) hi = std::min(hi, cos_theta / sin_theta);
+  const auto cdf = [&](double x) {
+    return 0.5 * cos_theta * (1 + std::erf(x)) + 0.5 * sin_theta * kInvSqrtPi * std::exp(-x * x);
+  };
+  const double c_lo = cdf(lo), target = c_lo + u * (cdf(hi) - c_lo);
+  double x = std::clamp(0.0, lo, hi);
+  for (int i = 0; i < 60; ++i) {
+    const double value = cdf(x) - target;
+    if (value > 0)
+      hi = x;
+    else
+      lo = x;
+    const double slope = (cos_theta - sin_theta * x) * kInvSqrtPi * std::exp(-x * x);
+    double next = slope > 0 ? x - value / slope : lo - 1;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - x) < 1e-9 || hi - lo < 1e-9) return next;
+    x = next;
+  }
+  return x;
+}
+
+// The unit normal of slopes (sx, sy): the facet z = sx x + sy y faces
+// (-sx, -sy, 1).
+Vec3 normal_from_slopes(double sx, double sy) {
+  const double inv = 1 / std::sqrt(1 + sx * sx + sy * sy);
+  return {float(-sx * inv), float(-sy * inv), float(inv)};
+}
+
+}  // namespace
+
 Vec3 MicrofacetDistribution::sample(Vec3 wi, Vec2 u) const {
   if (type_ == Type::GGX) {
     // Visible normals of GGX (Heitz, JCGT 2018): in the configuration
@@ -71,18 +114,31 @@ Vec3 MicrofacetDistribution::sample(Vec3 wi, Vec2 u) const {
     const Vec3 n = t1 * p1 + t2 * p2 + v * std::sqrt(std::max(0.0f, 1 - p1 * p1 - p2 * p2));
     return normalize(Vec3(alpha_u_ * n.x, alpha_v_ * n.y, std::max(1e-6f, n.z)));
   }
-  // Beckmann: the slopes of D(m) cos(theta_m) are Gaussian.
-  const float radius = std::sqrt(-std::log(std::max(1 - u.x, 1e-30f)));
-  const float phi = 2 * kPi * u.y;
-  return normalize(Vec3(-alpha_u_ * radius * std::cos(phi), -alpha_v_ * radius * std::sin(phi), 1));
+  // Visible normals of Beckmann (Heitz and d'Eon 2014): stretch wi to
+  // alpha = 1, sample the visible slope along wi's azimuth by inversion and
+  // the one across it from the Gaussian, rotate to wi's azimuth, un-stretch.
+  const double vx = double(alpha_u_) * wi.x, vy = double(alpha_v_) * wi.y, vz = wi.z;
+  const double len_xy = std::sqrt(vx * vx + vy * vy), len = std::sqrt(len_xy * len_xy + vz * vz);
+  const double cos_phi = len_xy > 0 ? vx / len_xy : 1, sin_phi = len_xy > 0 ? vy / len_xy : 0;
+  const double x = beckmann_visible_slope(vz / len, len_xy / len, u.x);
+  const double y = beckmann_visible_slope(1, 0, u.y);
+  return normal_from_slopes(alpha_u_ * (cos_phi * x - sin_phi * y), alpha_v_ * (sin_phi * x + cos_phi * y));
 }
 
 float MicrofacetDistribution::pdf(Vec3 wi, Vec3 m) const {
-  if (type_ == Type::GGX) {
-    if (wi.z <= 0) return 0;
-    return G1(wi, m) * std::max(0.0f, dot(wi, m)) * D(m) / wi.z;
-  }
-  return D(m) * std::max(0.0f, m.z);
+  if (wi.z <= 0) return 0;
+  return G1(wi, m) * std::max(0.0f, dot(wi, m)) * D(m) / wi.z;
 }
+
+Vec3 MicrofacetDistribution::sample_D(Vec2 u) const {
+  // The slopes of D(m) cos(theta_m) stretched to alpha = 1 are isotropic:
+  // Gaussian for Beckmann, tan^2 = u / (1 - u) for GGX.
+  const double v = std::max(1.0 - u.x, 1e-30);
+  const double radius = type_ == Type::GGX ? std::sqrt(u.x / v) : std::sqrt(-std::log(v));
+  const double phi = 2 * double(kPi) * u.y;
+  return normal_from_slopes(alpha_u_ * radius * std::cos(phi), alpha_v_ * radius * std::sin(phi));
+}
+
+float MicrofacetDistribution::pdf_D(Vec3 m) const { return D(m) * std::max(0.0f, m.z); }
 
 }  // namespace caustica

@@ -36,6 +36,13 @@ class MicrofacetDistribution {
   // The density of sample() producing m, per unit solid angle of m.
   float pdf(Vec3 wi, Vec3 m) const;
 
+  // Samples a microfacet normal regardless of direction: D(m) cos(theta_m).
+  // More of its samples are masked than sample()'s; kept for comparison and
+  // for scenes asking for it (sample_visible = false).
+  Vec3 sample_D(Vec2 u) const;
+  // The density of sample_D() producing m, per unit solid angle of m.
+  float pdf_D(Vec3 m) const;
+
  private:
   Type type_;
   float alpha_u_, alpha_v_;

@@ -18,9 +18,10 @@ struct Case {
 
 const Case kCases[] = {{Type::GGX, 0.1f, 0.1f},      {Type::GGX, 0.5f, 0.5f},      {Type::GGX, 0.05f, 0.6f},
                        {Type::Beckmann, 0.1f, 0.1f}, {Type::Beckmann, 0.7f, 0.7f}, {Type::Beckmann, 0.3f, 0.05f}};
-const float kThetas[] = {0.0f, 0.8f, 1.5f};
-// Chi-square tests in this file: every case at every angle, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 6 * 3);
+const float kThetas[] = {0.0f, 0.8f, 1.5f, 1.5607f};
+// Chi-square tests in this file: every case at every angle, and every
+// case's sample_D, 1% overall.
+const double kAlpha = test::sidak_alpha(0.01, 6 * 4 + 6);
 
 class Microfacet : public testing::TestWithParam<Case> {};
 
@@ -44,6 +45,8 @@ TEST_P(Microfacet, VisibleAreaMatchesMasking) {
   }
 }
 
+// Fine bins along cos(theta): the quadrature of the expected counts must
+// resolve the peak of alpha = 0.1 to 1e-5.
 TEST_P(Microfacet, SamplesFollowThePdf) {
   const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u, GetParam().alpha_v);
   for (float theta : kThetas) {
@@ -51,8 +54,35 @@ TEST_P(Microfacet, SamplesFollowThePdf) {
     EXPECT_NEAR(test::integrate_sphere([&](const Vec3& m) { return double(d.pdf(wi, m)); }, 80, 80), 1.0, 3e-3);
     const auto chi2 = test::chi2_test_sphere(
         [&](test::UniformSource& u) -> std::optional<Vec3> { return d.sample(wi, u.next_2d()); },
-        [&](const Vec3& m) { return double(d.pdf(wi, m)); }, {.sample_count = 300000, .bins_u = 40, .bins_v = 40});
+        [&](const Vec3& m) { return double(d.pdf(wi, m)); }, {.sample_count = 300000, .bins_u = 80, .bins_v = 40});
     EXPECT_GT(chi2.p_value, kAlpha) << "theta " << theta << "\n" << chi2.report;
+  }
+}
+
+TEST_P(Microfacet, NormalSamplesFollowD) {
+  const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u, GetParam().alpha_v);
+  EXPECT_NEAR(test::integrate_sphere([&](const Vec3& m) { return double(d.pdf_D(m)); }, 80, 80), 1.0, 3e-3);
+  const auto chi2 = test::chi2_test_sphere(
+      [&](test::UniformSource& u) -> std::optional<Vec3> { return d.sample_D(u.next_2d()); },
+      [&](const Vec3& m) { return double(d.pdf_D(m)); }, {.sample_count = 300000, .bins_u = 40, .bins_v = 40});
+  EXPECT_GT(chi2.p_value, kAlpha) << chi2.report;
+}
+
+// Sampled normals are unit length, above the surface and finite, even for
+// nearly smooth surfaces seen at grazing angles.
+TEST_P(Microfacet, SamplesAreValidNormals) {
+  for (float scale : {1.0f, 1e-3f}) {
+    const MicrofacetDistribution d(GetParam().type, GetParam().alpha_u * scale, GetParam().alpha_v * scale);
+    test::UniformSource u(7);
+    for (float theta : {0.0f, 1.0f, 1.5607f, 1.5707f})
+      for (int i = 0; i < 2000; ++i) {
+        const Vec3 wi = test::direction(theta, 0.7f);
+        for (const Vec3 m : {d.sample(wi, u.next_2d()), d.sample_D(u.next_2d())}) {
+          ASSERT_TRUE(is_finite(m)) << theta;
+          EXPECT_NEAR(length(m), 1.0f, 1e-5f);
+          EXPECT_GT(m.z, 0.0f);
+        }
+      }
   }
 }
 

@@ -1,0 +1,56 @@
+#include "core/bsdf/conductor_data.h"
+
+#include "core/registry/properties.h"
+
+namespace caustica {
+
+namespace {
+
+struct NamedConductor {
+  const char* name;
+  ConductorIor ior;
+};
+
+// RGB approximations of measured optical constants (eta, k), at about 650,
+// 550 and 450 nm.
+const NamedConductor kConductors[] = {
+    {"Ag", {{0.155f, 0.117f, 0.138f}, {4.828f, 3.122f, 2.147f}}},
+    {"Al", {{1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}}},
+    {"Au", {{0.143f, 0.374f, 1.442f}, {3.983f, 2.385f, 1.603f}}},
+    {"Cu", {{0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}}},
+};
+
+}  // namespace
+
+std::optional<ConductorIor> named_conductor(const std::string& name) {
+  for (const auto& c : kConductors)
+    if (name == c.name) return c.ior;
+  return std::nullopt;
+}
+
+std::vector<std::string> conductor_names() {
+  std::vector<std::string> names;
+  for (const auto& c : kConductors) names.emplace_back(c.name);
+  return names;
+}
+
+ConductorIor conductor_ior(const Properties& props) {
+  const std::string material = props.get_string("material");
+  if (material == "none") {
+    const ConductorIor ior{props.get_color("eta"), props.get_color("k")};
+    for (int c = 0; c < 3; ++c) {
+      if (!(ior.eta[c] >= 0)) throw props.error("eta", "must not be negative");
+      if (!(ior.k[c] >= 0)) throw props.error("k", "must not be negative");
+    }
+    return ior;
+  }
+  if (props.has("eta") || props.has("k"))
+    throw props.error("material", "give either a material or eta and k, not both");
+  const auto known = named_conductor(material);
+  if (!known)
+    throw props.error("material",
+                      "unknown conductor '" + material + "' (known: none, " + join_names(conductor_names()) + ")");
+  return *known;
+}
+
+}  // namespace caustica

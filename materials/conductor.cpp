@@ -1,0 +1,71 @@
+// conductor: a smooth metal, a perfect mirror weighted by the Fresnel
+// reflectance of a conductor with complex index of refraction eta + i k.
+//
+// Parameters
+//   material              string   none  a metal by chemical symbol (Ag, Al, Au, Cu), or
+//                                        none: eta and k are given, by default a perfect mirror
+//   eta                   color    0     real part of the index, per channel
+//   k                     color    1     imaginary part (absorption), per channel
+//   specular_reflectance  texture  1     multiplies the reflectance (not physical)
+//
+// Give either `material` or `eta` and `k`. With the defaults (eta 0, k 1)
+// the Fresnel reflectance is 1 at every angle. One-sided: light arriving
+// from below the shading normal is not reflected.
+//
+//   <bsdf type="conductor">
+//       <string name="material" value="Au"/>
+//   </bsdf>
+//
+//   <bsdf type="conductor">
+//       <rgb name="eta" value="0.2, 0.92, 1.1"/>
+//       <rgb name="k" value="3.9, 2.45, 2.14"/>
+//   </bsdf>
+
+#include "core/bsdf/bsdf.h"
+#include "core/bsdf/conductor_data.h"
+#include "core/bsdf/fresnel.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+class ConductorBsdf final : public Bsdf {
+ public:
+  explicit ConductorBsdf(const Properties& props)
+      : ior_(conductor_ior(props)), specular_reflectance_(props.get_texture("specular_reflectance")) {}
+
+  uint32_t lobes() const override { return kDeltaReflection; }
+
+  // A delta lobe: no density in any direction.
+  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
+  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2) const override {
+    if (!(cos_theta(wo) > 0)) return std::nullopt;
+    const Vec3 wi(-wo.x, -wo.y, wo.z);
+    return BsdfSample{wi, reflectance(ctx, wo) / cos_theta(wo), 1, kDeltaReflection, 1};
+  }
+
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    return cos_theta(wo) > 0 ? reflectance(ctx, wo) : Color();
+  }
+
+ private:
+  Color reflectance(const BsdfContext& ctx, Vec3 wo) const {
+    return fresnel_conductor(cos_theta(wo), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+  }
+
+  ConductorIor ior_;
+  std::shared_ptr<Texture> specular_reflectance_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(ConductorBsdf, "bsdf", "conductor",
+                         {{"material", ParamType::String, "none", "named metal, or none for eta and k"},
+                          {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
+                          {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
+                          {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"}},
+                         {});
+
+}  // namespace caustica

@@ -1,0 +1,139 @@
+// roughconductor: a rough metal, microfacet reflection (Torrance-Sparrow)
+// with the Fresnel reflectance of a conductor,
+//   f = F(wo.m) D(m) G(wo, wi, m) / (4 cos(wo) cos(wi)),  m the half vector,
+// with a Beckmann or GGX distribution of normals and Smith's
+// height-correlated masking-shadowing. Light scattered more than once
+// between the facets is lost, so rough surfaces come out a little dark.
+//
+// Parameters
+//   distribution          string   beckmann  beckmann or ggx
+//   alpha                 float    0.1       roughness (standard deviation of slopes, scaled)
+//   alpha_u, alpha_v      float    alpha     anisotropic roughness along the tangent and bitangent
+//   material              string   none      a metal by chemical symbol (Ag, Al, Au, Cu), or
+//                                            none: eta and k are given, by default a perfect mirror
+//   eta                   color    0         real part of the index, per channel
+//   k                     color    1         imaginary part (absorption), per channel
+//   specular_reflectance  texture  1         multiplies the reflectance (not physical)
+//   sample_visible        boolean  true      sample only the normals visible from wo
+//
+// One-sided: light arriving from below the shading normal is not reflected.
+//
+//   <bsdf type="roughconductor">
+//       <string name="material" value="Al"/>
+//       <string name="distribution" value="ggx"/>
+//       <float name="alpha_u" value="0.05"/>
+//       <float name="alpha_v" value="0.3"/>
+//   </bsdf>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/bsdf/bsdf.h"
+#include "core/bsdf/conductor_data.h"
+#include "core/bsdf/fresnel.h"
+#include "core/bsdf/microfacet.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+MicrofacetDistribution make_distribution(const Properties& props) {
+  MicrofacetDistribution::Type type;
+  try {
+    type = MicrofacetDistribution::parse_type(props.get_string("distribution"));
+  } catch (const std::invalid_argument& e) {
+    throw props.error("distribution", e.what());
+  }
+  const auto roughness = [&](const char* name) {
+    const float alpha = props.has(name) ? props.get_float(name) : props.get_float("alpha");
+    if (!(alpha >= 0) || !std::isfinite(alpha))
+      throw props.error(props.has(name) ? name : "alpha", "roughness must be finite and not negative");
+    return alpha;
+  };
+  if (props.has("alpha") && (props.has("alpha_u") || props.has("alpha_v")))
+    throw props.error("alpha", "give either alpha or alpha_u and alpha_v, not both");
+  if (props.has("alpha_u") != props.has("alpha_v"))
+    throw props.error(props.has("alpha_u") ? "alpha_u" : "alpha_v", "alpha_u and alpha_v go together");
+  return MicrofacetDistribution(type, roughness("alpha_u"), roughness("alpha_v"));
+}
+
+// The normal reflecting wo into wi, both above the surface; +z where the
+// two are opposite grazing directions.
+Vec3 half_vector(Vec3 wo, Vec3 wi) {
+  const Vec3 h = wo + wi;
+  const float len = length(h);
+  return len > 0 ? h / len : Vec3(0, 0, 1);
+}
+
+class RoughConductorBsdf final : public Bsdf {
+ public:
+  explicit RoughConductorBsdf(const Properties& props)
+      : distribution_(make_distribution(props)),
+        ior_(conductor_ior(props)),
+        specular_reflectance_(props.get_texture("specular_reflectance")),
+        sample_visible_(props.get_bool("sample_visible")) {}
+
+  uint32_t lobes() const override { return kGlossyReflection; }
+
+  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
+    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return {};
+    const Vec3 m = half_vector(wo, wi);
+    const float D = distribution_.D(m);
+    if (D == 0) return {};
+    const float G = distribution_.G(wo, wi, m);
+    const Color F = fresnel_conductor(dot(wo, m), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+    return F * (D * G / (4 * cos_theta(wo) * cos_theta(wi)));
+  }
+
+  float pdf(const BsdfContext&, Vec3 wo, Vec3 wi) const override {
+    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return 0;
+    const Vec3 m = half_vector(wo, wi);
+    const float wo_m = dot(wo, m);
+    return wo_m > 0 ? pdf_m(wo, m) / (4 * wo_m) : 0;
+  }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2 u) const override {
+    if (!(cos_theta(wo) > 0)) return std::nullopt;
+    const Vec3 m = sample_visible_ ? distribution_.sample(wo, u) : distribution_.sample_D(u);
+    const float wo_m = dot(wo, m);
+    if (!(wo_m > 0)) return std::nullopt;
+    const Vec3 wi = reflect(wo, m);
+    if (!(cos_theta(wi) > 0)) return std::nullopt;
+    // The pdf of the half vector of the pair, as pdf() computes it, so that
+    // the sample agrees with pdf() to rounding.
+    const float pdf = this->pdf(ctx, wo, wi);
+    if (!(pdf > 0)) return std::nullopt;
+    return BsdfSample{wi, eval(ctx, wo, wi), pdf, kGlossyReflection, 1};
+  }
+
+  // Fresnel reflectance at the macro-surface normal: an approximation that
+  // ignores the energy lost between facets, close for low roughness.
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    if (!(cos_theta(wo) > 0)) return {};
+    return fresnel_conductor(cos_theta(wo), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+  }
+
+ private:
+  float pdf_m(Vec3 wo, Vec3 m) const { return sample_visible_ ? distribution_.pdf(wo, m) : distribution_.pdf_D(m); }
+
+  MicrofacetDistribution distribution_;
+  ConductorIor ior_;
+  std::shared_ptr<Texture> specular_reflectance_;
+  bool sample_visible_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(RoughConductorBsdf, "bsdf", "roughconductor",
+                         {{"distribution", ParamType::String, "beckmann", "beckmann or ggx"},
+                          {"alpha", ParamType::Float, "0.1", "isotropic roughness"},
+                          {"alpha_u", ParamType::Float, "0.1", "roughness along the tangent"},
+                          {"alpha_v", ParamType::Float, "0.1", "roughness along the bitangent"},
+                          {"material", ParamType::String, "none", "named metal, or none for eta and k"},
+                          {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
+                          {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
+                          {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"},
+                          {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}},
+                         {});
+
+}  // namespace caustica
