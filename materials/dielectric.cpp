@@ -1,0 +1,96 @@
+// dielectric: a smooth interface between two dielectrics (glass, water).
+//
+// Light is reflected with the unpolarised Fresnel reflectance F and
+// refracted by Snell's law with 1 - F; beyond the critical angle (seen from
+// the denser side) all of it is reflected. Both lobes are delta lobes, and
+// sample() picks one with its Fresnel probability, so the weight
+// f |cos| / pdf of a sample is specular_reflectance for reflection and
+// specular_transmittance for refraction, times the radiance factor below.
+//
+// Radiance is not conserved across a refraction: it is compressed into the
+// denser medium's narrower cone. In radiance transport the transmitted
+// weight is therefore divided by eta^2, where eta (BsdfSample::eta) is the
+// index on the side of wi over the index on the side of wo; importance
+// transport carries no such factor. So a white dielectric's albedo
+// estimate is 1 in importance mode and F + (1 - F) / eta^2 in radiance mode.
+// albedo() reports specular_reflectance F + specular_transmittance (1 - F).
+//
+// Indices equal (int_ior = ext_ior) make an index-matched, invisible
+// interface: nothing is reflected and light passes straight through.
+//
+// Parameters
+//   int_ior                 ior      "bk7"  index of refraction inside (below the normal);
+//                                           a number or a name such as "water"
+//   ext_ior                 ior      "air"  index of refraction outside
+//   specular_reflectance    texture  1      scales the reflected light (1 is physical)
+//   specular_transmittance  texture  1      scales the transmitted light (1 is physical)
+//
+//   <bsdf type="dielectric">
+//       <string name="int_ior" value="water"/>
+//       <float name="ext_ior" value="1.0"/>
+//   </bsdf>
+
+#include <cmath>
+
+#include "core/bsdf/bsdf.h"
+#include "core/bsdf/fresnel.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+class DielectricBsdf final : public Bsdf {
+ public:
+  explicit DielectricBsdf(const Properties& props)
+      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
+        reflectance_(props.get_texture("specular_reflectance")),
+        transmittance_(props.get_texture("specular_transmittance")) {}
+
+  uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
+
+  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
+  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
+    if (wo.z == 0) return std::nullopt;
+    const DielectricFresnel fr = fresnel(wo.z);
+    if (u_lobe < fr.F) {
+      const Vec3 wi(-wo.x, -wo.y, wo.z);
+      return BsdfSample{wi, reflectance_->eval(ctx.uv) * (fr.F / std::abs(wi.z)), fr.F, kDeltaReflection, 1};
+    }
+    const Vec3 wi = refract(wo, Vec3(0, 0, 1), fr.cos_t, fr.eta_ti);
+    if (wi.z * wo.z >= 0) return std::nullopt;
+    // eta_ti^2 = (index on wo's side / index on wi's side)^2.
+    const float scale = ctx.mode == TransportMode::Radiance ? fr.eta_ti * fr.eta_ti : 1.0f;
+    const float T = 1 - fr.F;
+    return BsdfSample{wi, transmittance_->eval(ctx.uv) * (T * scale / std::abs(wi.z)), T, kDeltaTransmission,
+                      fr.eta_it};
+  }
+
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    const float F = fresnel(wo.z).F;
+    return reflectance_->eval(ctx.uv) * F + transmittance_->eval(ctx.uv) * (1 - F);
+  }
+
+ private:
+  // Fresnel at the macro surface; an index-matched interface is exactly
+  // transparent (the general formula leaves rounding residue there).
+  DielectricFresnel fresnel(float cos_o) const {
+    if (eta_ == 1) return {0, -cos_o, 1, 1};
+    return fresnel_dielectric(cos_o, eta_);
+  }
+
+  float eta_;  // int_ior / ext_ior
+  std::shared_ptr<Texture> reflectance_, transmittance_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(DielectricBsdf, "bsdf", "dielectric",
+                         {{"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
+                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
+                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
+                         {});
+
+}  // namespace caustica

@@ -1,0 +1,199 @@
+// roughdielectric: a rough interface between two dielectrics (frosted glass,
+// etched glass, rough water), after Walter et al., "Microfacet Models for
+// Refraction through Rough Surfaces", EGSR 2007.
+//
+// The surface is a field of smooth dielectric facets whose normals m follow
+// a Beckmann or GGX distribution D with Smith masking-shadowing G. A facet
+// reflects with the Fresnel reflectance F(wo.m) and refracts the rest. With
+// eta_o, eta_i the indices on the sides of wo and wi and eta = eta_i / eta_o:
+//
+//   reflection    f = F D G / (4 |wo.z| |wi.z|),             m = normalize(wo + wi)
+//   transmission  f = (1 - F) D G |wo.m| |wi.m| eta^2 s
+//                     / (|wo.z| |wi.z| (wo.m + eta wi.m)^2),  m = normalize(wo + eta wi)
+//
+// with m turned to the outside (+z), and s = 1 in importance transport and
+// s = 1 / eta^2 in radiance transport (radiance is compressed by eta^2 on
+// entering a denser medium; see `dielectric`). sample() draws a facet
+// normal seen from wo (GGX: visible normals; Beckmann: D(m) cos(theta_m)),
+// from the mirrored direction when wo is inside, then reflects with
+// probability F and refracts otherwise. Samples that would leave on the
+// wrong side, or meet a facet from behind, are rejected, so the sampling
+// density integrates to less than 1 (most for rough surfaces at grazing
+// angles). albedo() reports the smooth interface's
+// specular_reflectance F + specular_transmittance (1 - F) at wo.
+//
+// Equal indices make the facets invisible: light passes straight through as
+// a delta transmission lobe, as for `dielectric`.
+//
+// Parameters
+//   distribution            string   "beckmann"  microfacet distribution: "beckmann" or "ggx"
+//   alpha                   float    0.1         roughness (the RMS slope for Beckmann)
+//   alpha_u, alpha_v        float    -           anisotropic roughness along the tangent and
+//                                                the bitangent, instead of alpha; both or neither
+//   int_ior                 ior      "bk7"       index of refraction inside (below the normal);
+//                                                a number or a name such as "water"
+//   ext_ior                 ior      "air"       index of refraction outside
+//   specular_reflectance    texture  1           scales the reflected light (1 is physical)
+//   specular_transmittance  texture  1           scales the transmitted light (1 is physical)
+//
+//   <bsdf type="roughdielectric">
+//       <string name="distribution" value="ggx"/>
+//       <float name="alpha" value="0.3"/>
+//       <string name="int_ior" value="bk7"/>
+//   </bsdf>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/bsdf/bsdf.h"
+#include "core/bsdf/fresnel.h"
+#include "core/bsdf/microfacet.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+float read_alpha(const Properties& props, const std::string& name) {
+  const float alpha = props.get_float(name);
+  if (!(alpha >= 0) || !std::isfinite(alpha)) throw props.error(name, "a roughness must be finite and at least 0");
+  return alpha;
+}
+
+MicrofacetDistribution make_distribution(const Properties& props) {
+  MicrofacetDistribution::Type type;
+  try {
+    type = MicrofacetDistribution::parse_type(props.get_string("distribution"));
+  } catch (const std::invalid_argument& e) {
+    throw props.error("distribution", e.what());
+  }
+  const bool has_u = props.has("alpha_u"), has_v = props.has("alpha_v");
+  if (has_u != has_v) throw props.error(has_u ? "alpha_u" : "alpha_v", "give both alpha_u and alpha_v, or alpha");
+  if (!has_u) {
+    const float alpha = read_alpha(props, "alpha");
+    return {type, alpha, alpha};
+  }
+  if (props.has("alpha")) throw props.error("alpha", "give either alpha or alpha_u and alpha_v, not both");
+  return {type, read_alpha(props, "alpha_u"), read_alpha(props, "alpha_v")};
+}
+
+class RoughDielectricBsdf final : public Bsdf {
+ public:
+  explicit RoughDielectricBsdf(const Properties& props)
+      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
+        distribution_(make_distribution(props)),
+        reflectance_(props.get_texture("specular_reflectance")),
+        transmittance_(props.get_texture("specular_transmittance")) {}
+
+  uint32_t lobes() const override {
+    return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
+  }
+
+  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
+    const auto m = half_vector(wo, wi);
+    return m ? evaluate(ctx, wo, wi, *m).f : Color();
+  }
+
+  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
+    const auto m = half_vector(wo, wi);
+    return m ? evaluate(ctx, wo, wi, *m).pdf : 0;
+  }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
+    if (wo.z == 0) return std::nullopt;
+    if (index_matched())
+      return BsdfSample{-wo, transmittance_->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
+    // Facets are seen from wo's side; the distribution is symmetric under
+    // m -> (-m.x, -m.y, m.z), so wo inside samples as -wo outside.
+    const Vec3 m = distribution_.sample(wo.z > 0 ? wo : -wo, u);
+    const float wo_m = dot(wo, m);
+    if (wo_m * wo.z <= 0) return std::nullopt;  // a back-facing facet (Beckmann samples those)
+    const DielectricFresnel fr = fresnel_dielectric(wo_m, eta_);
+    Vec3 wi;
+    uint32_t lobe;
+    if (u_lobe < fr.F) {
+      wi = reflect(wo, m);
+      lobe = kGlossyReflection;
+      if (wi.z * wo.z <= 0) return std::nullopt;
+    } else {
+      wi = refract(wo, m, fr.cos_t, fr.eta_ti);
+      lobe = kGlossyTransmission;
+      if (wi.z * wo.z >= 0) return std::nullopt;
+    }
+    const Evaluation e = evaluate(ctx, wo, wi, m);
+    if (!(e.pdf > 0)) return std::nullopt;
+    return BsdfSample{wi, e.f, e.pdf, lobe, lobe == kGlossyTransmission ? fr.eta_it : 1.0f};
+  }
+
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, eta_).F;
+    return reflectance_->eval(ctx.uv) * F + transmittance_->eval(ctx.uv) * (1 - F);
+  }
+
+ private:
+  struct Evaluation {
+    Color f;
+    float pdf = 0;
+  };
+
+  bool index_matched() const { return eta_ == 1; }
+
+  // The facet normal that turns wo into wi, by reflection or refraction,
+  // oriented to the outside; none where no facet seen from both directions does.
+  std::optional<Vec3> half_vector(Vec3 wo, Vec3 wi) const {
+    if (wo.z == 0 || wi.z == 0 || index_matched()) return std::nullopt;
+    const bool reflection = wo.z * wi.z > 0;
+    // For refraction eta_o wo + eta_i wi is along the facet normal (Snell).
+    Vec3 m = reflection ? wo + wi : wo + wi * (wo.z > 0 ? eta_ : 1 / eta_);
+    const float len2 = squared_length(m);
+    if (!(len2 > 0)) return std::nullopt;
+    m = m / std::sqrt(len2);
+    if (m.z < 0) m = -m;
+    if (dot(wo, m) * wo.z <= 0 || dot(wi, m) * wi.z <= 0) return std::nullopt;
+    return m;
+  }
+
+  // f and pdf of the pair (wo, wi) through facet normal m (m.z > 0).
+  Evaluation evaluate(const BsdfContext& ctx, Vec3 wo, Vec3 wi, Vec3 m) const {
+    const float D = distribution_.D(m), G = distribution_.G(wo, wi, m);
+    const float wo_m = dot(wo, m), wi_m = dot(wi, m);
+    // Density of the facet normal as sampled from wo's side.
+    const float pdf_m = distribution_.pdf(wo.z > 0 ? wo : -wo, m);
+    if (!(D > 0) || !(pdf_m > 0)) return {};
+    const float F = fresnel_dielectric(wo_m, eta_).F;
+    const float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
+    if (wo.z * wi.z > 0) {
+      // Jacobian of the reflected direction: d(omega_m) / d(omega_i) = 1 / (4 |wi.m|).
+      const float f = F * D * G / (4 * cos_o * cos_i);
+      return {reflectance_->eval(ctx.uv) * f, F * pdf_m / (4 * std::abs(wo_m))};
+    }
+    if (F >= 1) return {};
+    const float eta = wo.z > 0 ? eta_ : 1 / eta_;  // index on wi's side over wo's
+    const float denom = wo_m + eta * wi_m;
+    // Jacobian of the refracted direction: eta^2 |wi.m| / (wo.m + eta wi.m)^2.
+    const float jacobian = eta * eta * std::abs(wi_m) / (denom * denom);
+    const float scale = ctx.mode == TransportMode::Radiance ? 1 : eta * eta;
+    const float f = (1 - F) * D * G * std::abs(wo_m * wi_m) * scale / (cos_o * cos_i * denom * denom);
+    const Evaluation e{transmittance_->eval(ctx.uv) * f, (1 - F) * pdf_m * jacobian};
+    if (!e.f.is_finite() || !std::isfinite(e.pdf)) return {};
+    return e;
+  }
+
+  float eta_;  // int_ior / ext_ior
+  MicrofacetDistribution distribution_;
+  std::shared_ptr<Texture> reflectance_, transmittance_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric",
+                         {{"distribution", ParamType::String, "beckmann", "microfacet distribution: beckmann or ggx"},
+                          {"alpha", ParamType::Float, "0.1", "roughness"},
+                          {"alpha_u", ParamType::Float, std::nullopt, "roughness along the tangent, with alpha_v"},
+                          {"alpha_v", ParamType::Float, std::nullopt, "roughness along the bitangent, with alpha_u"},
+                          {"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
+                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
+                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
+                         {});
+
+}  // namespace caustica

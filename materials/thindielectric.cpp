@@ -1,0 +1,84 @@
+// thindielectric: a thin dielectric sheet, such as a window pane.
+//
+// Light entering the sheet bounces between its two parallel faces; summing
+// the reflected and transmitted parts of all bounces gives
+//   R' = R + T^2 R / (1 - R^2) = 2 R / (1 + R),   T' = 1 - R',
+// with R the Fresnel reflectance of one face at the incident angle and
+// T = 1 - R (both faces see the same angle, from either side). The
+// transmitted light leaves parallel to where it came in, so transmission
+// is modelled as passing straight through (wi = -wo, eta 1) and no
+// radiance scaling applies. Both lobes are delta lobes, sampled with
+// probabilities R' and T', so each sample's weight f |cos| / pdf is
+// specular_reflectance or specular_transmittance. The sheet looks the same
+// from both sides.
+//
+// Parameters
+//   int_ior                 ior      "bk7"  index of refraction of the sheet;
+//                                           a number or a name such as "water"
+//   ext_ior                 ior      "air"  index of refraction around it
+//   specular_reflectance    texture  1      scales the reflected light (1 is physical)
+//   specular_transmittance  texture  1      scales the transmitted light (1 is physical)
+//
+//   <bsdf type="thindielectric">
+//       <string name="int_ior" value="bk7"/>
+//   </bsdf>
+
+#include <cmath>
+
+#include "core/bsdf/bsdf.h"
+#include "core/bsdf/fresnel.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+class ThinDielectricBsdf final : public Bsdf {
+ public:
+  explicit ThinDielectricBsdf(const Properties& props)
+      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
+        reflectance_(props.get_texture("specular_reflectance")),
+        transmittance_(props.get_texture("specular_transmittance")) {}
+
+  uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
+
+  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
+  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
+    if (wo.z == 0) return std::nullopt;
+    const float R = reflectance(std::abs(wo.z)), T = 1 - R;
+    const float inv_cos = 1 / std::abs(wo.z);  // |wi.z| = |wo.z| for both lobes
+    if (u_lobe < R)
+      return BsdfSample{Vec3(-wo.x, -wo.y, wo.z), reflectance_->eval(ctx.uv) * (R * inv_cos), R, kDeltaReflection, 1};
+    return BsdfSample{-wo, transmittance_->eval(ctx.uv) * (T * inv_cos), T, kDeltaTransmission, 1};
+  }
+
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    const float R = reflectance(std::abs(wo.z));
+    return reflectance_->eval(ctx.uv) * R + transmittance_->eval(ctx.uv) * (1 - R);
+  }
+
+ private:
+  // R' of the sheet for light arriving at cos_o > 0 from outside.
+  float reflectance(float cos_o) const {
+    if (eta_ == 1) return 0;  // index-matched: exactly transparent
+    const float R = fresnel_dielectric(cos_o, eta_).F;
+    // R + T^2 R / (1 - R^2) with T = 1 - R, written so that R = 1 (total
+    // internal reflection at the first face, for eta < 1) stays finite.
+    return 2 * R / (1 + R);
+  }
+
+  float eta_;  // int_ior / ext_ior
+  std::shared_ptr<Texture> reflectance_, transmittance_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(ThinDielectricBsdf, "bsdf", "thindielectric",
+                         {{"int_ior", ParamType::Ior, "bk7", "index of refraction of the sheet"},
+                          {"ext_ior", ParamType::Ior, "air", "index of refraction around it"},
+                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
+                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
+                         {});
+
+}  // namespace caustica
