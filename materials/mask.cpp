@@ -5,7 +5,7 @@
 //                          rest passes straight through the surface
 //   (nested) bsdf          the material where the surface is opaque
 //
-// With probability `opacity` (the average of the texture's channels, clamped
+// With probability `opacity` (the texture's luminance, as Mitsuba, clamped
 // to [0, 1]) light meets the nested BSDF, otherwise it continues unchanged
 // in its direction: an index-matched pass-through, a delta transmission lobe
 // with wi = -wo, eta = 1 and weight f |cos| / pdf = 1. eval and pdf are the
@@ -71,7 +71,7 @@ class MaskBsdf final : public Bsdf {
 
  private:
   float opacity(const BsdfContext& ctx) const {
-    const float a = opacity_->eval(ctx.uv).average();
+    const float a = opacity_->eval(ctx.uv).luminance();
     return std::isfinite(a) ? std::clamp(a, 0.0f, 1.0f) : 1.0f;
   }
 
