@@ -33,6 +33,10 @@ enum BsdfLobe : uint32_t {
 struct BsdfContext {
   TransportMode mode = TransportMode::Radiance;
   Vec2 uv;
+  // Surface tangents along u and v in the local shading frame, not unit
+  // length (their lengths scale texture derivatives); bump and normal maps
+  // build their perturbed frames from them.
+  Vec3 dpdu{1, 0, 0}, dpdv{0, 1, 0};
 };
 
 // A sampled direction. For a delta lobe f and pdf are the discrete lobe's

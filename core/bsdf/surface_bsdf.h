@@ -15,7 +15,14 @@ namespace caustica {
 class SurfaceBsdf {
  public:
   SurfaceBsdf(const Bsdf& bsdf, const SurfaceInteraction& si, TransportMode mode)
-      : bsdf_(&bsdf), frame_(si.shading), ng_(si.ng), ctx_{mode, si.uv} {}
+      : bsdf_(&bsdf), frame_(si.shading), ng_(si.ng), ctx_{mode, si.uv} {
+    // Shapes without a parametrisation leave the tangents zero; the
+    // defaults (the shading frame's own axes) stand in for them.
+    if (squared_length(si.dpdu) > 0 && squared_length(si.dpdv) > 0) {
+      ctx_.dpdu = frame_.to_local(si.dpdu);
+      ctx_.dpdv = frame_.to_local(si.dpdv);
+    }
+  }
 
   Color eval(Vec3 wo_world, Vec3 wi_world) const;
   float pdf(Vec3 wo_world, Vec3 wi_world) const;

@@ -1,0 +1,166 @@
+// bitmap: a colour image read from a file (PNG, JPEG, EXR, HDR, ... through
+// OpenImageIO), looked up at the surface's (u, v).
+//
+// Parameters
+//   filename     string     (required)  image file, relative to the scene file
+//   filter_type  string     bilinear    "bilinear" or "nearest"
+//   wrap_mode    string     repeat      "repeat", "mirror" or "clamp": what
+//                                       (u, v) outside [0, 1]^2 read
+//   raw          boolean    false       use the stored values as they are
+//   to_uv        transform  none        applied to (u, v, 0) before the lookup
+//
+// Orientation (as Mitsuba 3): u runs left to right and v top to bottom, so
+// (0, 0) is the image's top-left corner. Meshes whose files follow the
+// v-up convention (OBJ) are flipped on load by the shape's flip_tex_coords.
+//
+// Colour: unless `raw`, images stored as integers (8- or 16-bit PNG, JPEG)
+// are taken as sRGB-encoded and decoded to linear values with the sRGB
+// transfer function (IEC 61966-2-1); floating-point images (EXR, HDR) are
+// linear already and used as stored. One channel (grey) gives grey colours;
+// with two channels the second (alpha) is ignored, and from four or more
+// the first three are used as RGB. mean() is the average over the pixels.
+//
+//   <texture type="bitmap" name="reflectance">
+//       <string name="filename" value="textures/wood.png"/>
+//       <string name="wrap_mode" value="mirror"/>
+//   </texture>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "core/math/transform.h"
+#include "core/registry/properties.h"
+#include "core/texture/texture.h"
+
+namespace caustica {
+namespace {
+
+enum class WrapMode { Repeat, Mirror, Clamp };
+
+// The sRGB electro-optical transfer function, IEC 61966-2-1.
+float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+
+// A pixel index, possibly outside [0, n), mapped into it.
+int wrap(int i, int n, WrapMode mode) {
+  switch (mode) {
+    case WrapMode::Clamp:
+      return std::clamp(i, 0, n - 1);
+    case WrapMode::Mirror: {
+      int m = i % (2 * n);
+      if (m < 0) m += 2 * n;
+      return m < n ? m : 2 * n - 1 - m;
+    }
+    case WrapMode::Repeat:
+    default: {
+      const int m = i % n;
+      return m < 0 ? m + n : m;
+    }
+  }
+}
+
+// A pixel coordinate from a texture coordinate, kept in int range so that
+// the wrap arithmetic cannot overflow for absurd uv.
+float pixel_coordinate(float t, int n) { return std::clamp(t * float(n), -1e8f, 1e8f); }
+
+class BitmapTexture final : public Texture {
+ public:
+  explicit BitmapTexture(const Properties& props) {
+    const std::filesystem::path file = props.get_path("filename");
+    const std::string filter = props.get_string("filter_type");
+    if (filter == "bilinear")
+      bilinear_ = true;
+    else if (filter == "nearest")
+      bilinear_ = false;
+    else
+      throw props.error("filter_type", "unknown filter '" + filter + "' (accepted: bilinear, nearest)");
+    const std::string wrap_name = props.get_string("wrap_mode");
+    if (wrap_name == "repeat")
+      wrap_ = WrapMode::Repeat;
+    else if (wrap_name == "mirror")
+      wrap_ = WrapMode::Mirror;
+    else if (wrap_name == "clamp")
+      wrap_ = WrapMode::Clamp;
+    else
+      throw props.error("wrap_mode", "unknown wrap mode '" + wrap_name + "' (accepted: repeat, mirror, clamp)");
+    if (props.has("to_uv")) to_uv_ = props.get_transform("to_uv");
+    load(props, file, props.get_bool("raw"));
+  }
+
+  Color eval(Vec2 uv) const override {
+    if (to_uv_) {
+      const Vec3 p = to_uv_->point({uv.x, uv.y, 0});
+      uv = {p.x, p.y};
+    }
+    const float x = pixel_coordinate(uv.x, width_), y = pixel_coordinate(uv.y, height_);
+    if (!std::isfinite(x) || !std::isfinite(y)) return {};
+    if (!bilinear_) return texel(int(std::floor(x)), int(std::floor(y)));
+    // Pixel centres lie at half-integer coordinates.
+    const float fx = x - 0.5f, fy = y - 0.5f;
+    const float x0 = std::floor(fx), y0 = std::floor(fy);
+    const float tx = fx - x0, ty = fy - y0;
+    const int ix = int(x0), iy = int(y0);
+    return (texel(ix, iy) * (1 - tx) + texel(ix + 1, iy) * tx) * (1 - ty) +
+           (texel(ix, iy + 1) * (1 - tx) + texel(ix + 1, iy + 1) * tx) * ty;
+  }
+
+  Color mean() const override { return mean_; }
+
+ private:
+  void load(const Properties& props, const std::filesystem::path& file, bool raw) {
+    if (!std::filesystem::is_regular_file(file))
+      throw props.error("filename", "image file '" + file.string() + "' not found");
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw props.error("filename", "cannot read image '" + file.string() + "': " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    const int channels = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
+      throw props.error("filename", "image '" + file.string() + "' is empty");
+    std::vector<float> data(size_t(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
+      throw props.error("filename", "cannot read image '" + file.string() + "': " + in->geterror());
+    const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+    const bool is_float =
+        base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE;
+    const bool decode = !raw && !is_float;
+
+    width_ = spec.width;
+    height_ = spec.height;
+    pixels_.resize(size_t(width_) * height_);
+    double sum[3] = {};
+    for (size_t i = 0; i < pixels_.size(); ++i) {
+      const float* p = &data[i * channels];
+      Color c = channels >= 3 ? Color(p[0], p[1], p[2]) : Color(p[0]);
+      if (decode) c = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
+      pixels_[i] = c;
+      for (int k = 0; k < 3; ++k) sum[k] += c[k];
+    }
+    const double n = double(pixels_.size());
+    mean_ = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
+  }
+
+  Color texel(int x, int y) const { return pixels_[size_t(wrap(y, height_, wrap_)) * width_ + wrap(x, width_, wrap_)]; }
+
+  int width_ = 0, height_ = 0;
+  std::vector<Color> pixels_;  // linear RGB, top row first
+  Color mean_;
+  bool bilinear_ = true;
+  WrapMode wrap_ = WrapMode::Repeat;
+  std::optional<Transform> to_uv_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(BitmapTexture, "texture", "bitmap",
+                         {{"filename", ParamType::String, std::nullopt, "image file"},
+                          {"filter_type", ParamType::String, "bilinear", "bilinear or nearest"},
+                          {"wrap_mode", ParamType::String, "repeat", "repeat, mirror or clamp"},
+                          {"raw", ParamType::Boolean, "false", "use stored values without sRGB decoding"},
+                          {"to_uv", ParamType::Transform, std::nullopt, "uv transform (optional)"}},
+                         {});
+
+}  // namespace caustica

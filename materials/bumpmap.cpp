@@ -1,0 +1,120 @@
+// bumpmap: fine relief from a height texture, by tilting the shading normal.
+//
+// Parameters
+//   scale     float    1  multiplies the height (in the surface's own units
+//                         per unit of u and v, as dp/du and dp/dv measure them)
+//   (nested)  texture     the height field; its luminance is used
+//   (nested)  bsdf        the material evaluated in the perturbed frame
+//
+// The displaced surface is p + n scale h(u, v); its tangents are
+// dp/du + n scale dh/du and dp/dv + n scale dh/dv (the tangents first made
+// perpendicular to n), and their cross product, oriented to the side of n,
+// is the perturbed normal n'. The nested BSDF sees directions in the frame
+// around n' whose first axis follows dp/du. dh/du and dh/dv are central
+// differences over 1/1024 of the unit uv square.
+//
+// Directions on the same side of the shading surface but on opposite sides
+// of the perturbed one (and the converse) carry nothing, so no light leaks
+// through the relief; the nested BSDF's cosine is taken about n', so the
+// result is not reciprocal in general and can lose energy at grazing angles.
+//
+//   <bsdf type="bumpmap">
+//       <texture type="bitmap">
+//           <string name="filename" value="bumps.png"/>
+//           <boolean name="raw" value="true"/>
+//       </texture>
+//       <float name="scale" value="0.01"/>
+//       <bsdf type="diffuse"/>
+//   </bsdf>
+
+#include <cmath>
+
+#include "core/bsdf/bsdf.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+constexpr float kStep = 1.0f / 1024;
+
+class BumpMapBsdf final : public Bsdf {
+ public:
+  explicit BumpMapBsdf(const Properties& props)
+      : height_(props.child<Texture>("texture")), nested_(props.child<Bsdf>("bsdf")), scale_(props.get_float("scale")) {
+    if (!height_) throw SceneError(props.where(), "bsdf 'bumpmap' takes one nested height texture");
+    if (!nested_) throw SceneError(props.where(), "bsdf 'bumpmap' takes one nested bsdf");
+    if (!std::isfinite(scale_)) throw props.error("scale", "must be a finite number");
+  }
+
+  uint32_t lobes() const override { return nested_->lobes(); }
+
+  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
+    const Frame f = frame(ctx);
+    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
+    if (!sides_agree(wo, wi, wo_p, wi_p)) return {};
+    return nested_->eval(nested_context(ctx, f), wo_p, wi_p);
+  }
+
+  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
+    const Frame f = frame(ctx);
+    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
+    if (!sides_agree(wo, wi, wo_p, wi_p)) return 0;
+    return nested_->pdf(nested_context(ctx, f), wo_p, wi_p);
+  }
+
+  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
+    const Frame f = frame(ctx);
+    const Vec3 wo_p = f.to_local(wo);
+    auto s = nested_->sample(nested_context(ctx, f), wo_p, u_lobe, u);
+    if (!s) return std::nullopt;
+    const Vec3 wi = f.to_world(s->wi);
+    if (!sides_agree(wo, wi, wo_p, s->wi)) return std::nullopt;
+    s->wi = wi;
+    return s;
+  }
+
+  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
+    const Frame f = frame(ctx);
+    return nested_->albedo(nested_context(ctx, f), f.to_local(wo));
+  }
+
+ private:
+  // Reflection or transmission must mean the same about both surfaces.
+  static bool sides_agree(Vec3 wo, Vec3 wi, Vec3 wo_p, Vec3 wi_p) {
+    return wo.z * wo_p.z > 0 && wi.z * wi_p.z > 0 && same_hemisphere(wo, wi) == same_hemisphere(wo_p, wi_p);
+  }
+
+  float height(Vec2 uv) const { return height_->eval(uv).luminance(); }
+
+  // The perturbed shading frame, in the local frame of the unperturbed one.
+  Frame frame(const BsdfContext& ctx) const {
+    const float dh_du = (height({ctx.uv.x + kStep, ctx.uv.y}) - height({ctx.uv.x - kStep, ctx.uv.y})) / (2 * kStep);
+    const float dh_dv = (height({ctx.uv.x, ctx.uv.y + kStep}) - height({ctx.uv.x, ctx.uv.y - kStep})) / (2 * kStep);
+    const Vec3 tu(ctx.dpdu.x, ctx.dpdu.y, scale_ * dh_du);
+    const Vec3 tv(ctx.dpdv.x, ctx.dpdv.y, scale_ * dh_dv);
+    Vec3 n = cross(tu, tv);
+    const float len = length(n);
+    if (!(len > 0) || !std::isfinite(len)) return Frame::from_normal_and_tangent({0, 0, 1}, ctx.dpdu);
+    n = n / len;
+    if (n.z < 0) n = -n;
+    return Frame::from_normal_and_tangent(n, tu);
+  }
+
+  static BsdfContext nested_context(const BsdfContext& ctx, const Frame& f) {
+    BsdfContext out = ctx;
+    out.dpdu = f.to_local(ctx.dpdu);
+    out.dpdv = f.to_local(ctx.dpdv);
+    return out;
+  }
+
+  std::shared_ptr<Texture> height_;
+  std::shared_ptr<Bsdf> nested_;
+  float scale_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(BumpMapBsdf, "bsdf", "bumpmap", {{"scale", ParamType::Float, "1", "height scale"}},
+                         {"texture", "bsdf"});
+
+}  // namespace caustica
