@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::direction;
 
-// Chi-square tests in this file: 2 wrappers x 3 incident angles, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 6);
+// Chi-square tests in this file: 2 wrappers x 3 incident angles (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 const char* kDiffuse = "<bsdf type='diffuse'><rgb name='reflectance' value='0.2, 0.5, 0.8'/></bsdf>";
 

@@ -8,8 +8,8 @@ namespace {
 
 using test::direction;
 
-// Chi-square tests in this file: 4 incident angles x 2 modes, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 8);
+// Chi-square tests in this file: 4 incident angles x 2 modes (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 TEST(DiffuseBsdf, SamplesFollowThePdf) {
   const auto bsdf = test::make_bsdf("<bsdf type='diffuse'><rgb name='reflectance' value='0.2, 0.5, 0.8'/></bsdf>");

@@ -12,8 +12,8 @@ namespace {
 
 using test::direction;
 
-// Chi-square tests in this file: 3 incident angles x 2 opacities, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 6);
+// Chi-square tests in this file: 3 incident angles x 2 opacities (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 std::string masked_diffuse(const std::string& opacity) {
   return "<bsdf type='mask'>" + opacity +

@@ -20,8 +20,8 @@ const Case kCases[] = {{Type::GGX, 0.1f, 0.1f},      {Type::GGX, 0.5f, 0.5f},   
                        {Type::Beckmann, 0.1f, 0.1f}, {Type::Beckmann, 0.7f, 0.7f}, {Type::Beckmann, 0.3f, 0.05f}};
 const float kThetas[] = {0.0f, 0.8f, 1.5f, 1.5607f};
 // Chi-square tests in this file: every case at every angle, and every
-// case's sample_D, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 6 * 4 + 6);
+// case's sample_D (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 class Microfacet : public testing::TestWithParam<Case> {};
 

@@ -17,8 +17,8 @@ using ::testing::HasSubstr;
 const float kThetas[] = {0.0f, 0.7f, 1.4f, 1.5607f};  // down to 0.01 rad from grazing
 const float kExponents[] = {1.0f, 30.0f, 1000.0f};
 
-// Chi-square tests in this file: 3 exponents x 4 incident angles, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 12);
+// Chi-square tests in this file: 3 exponents x 4 incident angles (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 std::shared_ptr<Bsdf> phong(const std::string& kd, const std::string& ks, float exponent) {
   return test::make_bsdf("<bsdf type='phong'><rgb name='diffuse_reflectance' value='" + kd +

@@ -53,8 +53,8 @@ std::vector<Vec3> incident_directions() {
 }
 
 // Chi-square tests in this file: 12 configurations x 6 directions, plus 2
-// anisotropic ones x 2 directions; 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 12 * 6 + 4);
+// anisotropic ones x 2 directions (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 void expect_consistent(const Bsdf& bsdf, Vec3 wo, const std::string& what) {
   for (const BsdfContext& ctx : {kRadiance, kImportance}) {

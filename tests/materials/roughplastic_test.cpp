@@ -18,8 +18,8 @@ const float kThetas[] = {0.0f, 0.7f, 1.4f, 1.5607f};  // down to 0.01 rad from g
 const char* const kDistributions[] = {"beckmann", "ggx"};
 const float kAlphas[] = {0.05f, 0.3f, 0.8f};
 
-// Chi-square tests in this file: 2 distributions x 3 roughnesses x 4 incident angles, 1% overall.
-const double kAlpha = test::sidak_alpha(0.01, 24);
+// Chi-square tests in this file: 2 distributions x 3 roughnesses x 4 incident angles (counted in kMaterialChi2Tests).
+const double kAlpha = test::material_chi2_alpha();
 
 std::shared_ptr<Bsdf> rough(const std::string& distribution, float alpha, const std::string& extra = "") {
   return test::make_bsdf("<bsdf type='roughplastic'><string name='distribution' value='" + distribution +
