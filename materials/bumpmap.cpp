@@ -29,7 +29,7 @@
 
 #include <cmath>
 
-#include "core/bsdf/bsdf.h"
+#include "core/bsdf/perturbed_frame_bsdf.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -37,57 +37,18 @@ namespace {
 
 constexpr float kStep = 1.0f / 1024;
 
-class BumpMapBsdf final : public Bsdf {
+class BumpMapBsdf final : public PerturbedFrameBsdf {
  public:
   explicit BumpMapBsdf(const Properties& props)
-      : height_(props.child<Texture>("texture")), nested_(props.child<Bsdf>("bsdf")), scale_(props.get_float("scale")) {
+      : PerturbedFrameBsdf(props), height_(props.child<Texture>("texture")), scale_(props.get_float("scale")) {
     if (!height_) throw SceneError(props.where(), "bsdf 'bumpmap' takes one nested height texture");
-    if (!nested_) throw SceneError(props.where(), "bsdf 'bumpmap' takes one nested bsdf");
     if (!std::isfinite(scale_)) throw props.error("scale", "must be a finite number");
   }
 
-  uint32_t lobes() const override { return nested_->lobes(); }
-
-  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
-    if (!sides_agree(wo, wi, wo_p, wi_p)) return {};
-    return nested_->eval(nested_context(ctx, f), wo_p, wi_p);
-  }
-
-  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
-    if (!sides_agree(wo, wi, wo_p, wi_p)) return 0;
-    return nested_->pdf(nested_context(ctx, f), wo_p, wi_p);
-  }
-
-  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo);
-    auto s = nested_->sample(nested_context(ctx, f), wo_p, u_lobe, u);
-    if (!s) return std::nullopt;
-    const Vec3 wi = f.to_world(s->wi);
-    if (!sides_agree(wo, wi, wo_p, s->wi)) return std::nullopt;
-    s->wi = wi;
-    return s;
-  }
-
-  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    const Frame f = frame(ctx);
-    return nested_->albedo(nested_context(ctx, f), f.to_local(wo));
-  }
-
  private:
-  // Reflection or transmission must mean the same about both surfaces.
-  static bool sides_agree(Vec3 wo, Vec3 wi, Vec3 wo_p, Vec3 wi_p) {
-    return wo.z * wo_p.z > 0 && wi.z * wi_p.z > 0 && same_hemisphere(wo, wi) == same_hemisphere(wo_p, wi_p);
-  }
-
   float height(Vec2 uv) const { return height_->eval(uv).luminance(); }
 
-  // The perturbed shading frame, in the local frame of the unperturbed one.
-  Frame frame(const BsdfContext& ctx) const {
+  Frame frame(const BsdfContext& ctx) const override {
     const float dh_du = (height({ctx.uv.x + kStep, ctx.uv.y}) - height({ctx.uv.x - kStep, ctx.uv.y})) / (2 * kStep);
     const float dh_dv = (height({ctx.uv.x, ctx.uv.y + kStep}) - height({ctx.uv.x, ctx.uv.y - kStep})) / (2 * kStep);
     const Vec3 tu(ctx.dpdu.x, ctx.dpdu.y, scale_ * dh_du);
@@ -100,15 +61,7 @@ class BumpMapBsdf final : public Bsdf {
     return Frame::from_normal_and_tangent(n, tu);
   }
 
-  static BsdfContext nested_context(const BsdfContext& ctx, const Frame& f) {
-    BsdfContext out = ctx;
-    out.dpdu = f.to_local(ctx.dpdu);
-    out.dpdv = f.to_local(ctx.dpdv);
-    return out;
-  }
-
   std::shared_ptr<Texture> height_;
-  std::shared_ptr<Bsdf> nested_;
   float scale_;
 };
 

@@ -27,59 +27,19 @@
 
 #include <cmath>
 
-#include "core/bsdf/bsdf.h"
+#include "core/bsdf/perturbed_frame_bsdf.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
 
-class NormalMapBsdf final : public Bsdf {
+class NormalMapBsdf final : public PerturbedFrameBsdf {
  public:
   explicit NormalMapBsdf(const Properties& props)
-      : normals_(props.get_texture("normalmap")), nested_(props.child<Bsdf>("bsdf")) {
-    if (!nested_) throw SceneError(props.where(), "bsdf 'normalmap' takes one nested bsdf");
-  }
-
-  uint32_t lobes() const override { return nested_->lobes(); }
-
-  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
-    if (!sides_agree(wo, wi, wo_p, wi_p)) return {};
-    return nested_->eval(nested_context(ctx, f), wo_p, wi_p);
-  }
-
-  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo), wi_p = f.to_local(wi);
-    if (!sides_agree(wo, wi, wo_p, wi_p)) return 0;
-    return nested_->pdf(nested_context(ctx, f), wo_p, wi_p);
-  }
-
-  std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
-    const Frame f = frame(ctx);
-    const Vec3 wo_p = f.to_local(wo);
-    auto s = nested_->sample(nested_context(ctx, f), wo_p, u_lobe, u);
-    if (!s) return std::nullopt;
-    const Vec3 wi = f.to_world(s->wi);
-    if (!sides_agree(wo, wi, wo_p, s->wi)) return std::nullopt;
-    s->wi = wi;
-    return s;
-  }
-
-  Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    const Frame f = frame(ctx);
-    return nested_->albedo(nested_context(ctx, f), f.to_local(wo));
-  }
+      : PerturbedFrameBsdf(props), normals_(props.get_texture("normalmap")) {}
 
  private:
-  // Reflection or transmission must mean the same about both surfaces.
-  static bool sides_agree(Vec3 wo, Vec3 wi, Vec3 wo_p, Vec3 wi_p) {
-    return wo.z * wo_p.z > 0 && wi.z * wi_p.z > 0 && same_hemisphere(wo, wi) == same_hemisphere(wo_p, wi_p);
-  }
-
-  // The perturbed shading frame, in the local frame of the unperturbed one.
-  Frame frame(const BsdfContext& ctx) const {
+  Frame frame(const BsdfContext& ctx) const override {
     const Frame tangent = Frame::from_normal_and_tangent({0, 0, 1}, ctx.dpdu);
     const Color c = normals_->eval(ctx.uv);
     const Vec3 m(2 * c.r - 1, 2 * c.g - 1, 2 * c.b - 1);
@@ -88,15 +48,7 @@ class NormalMapBsdf final : public Bsdf {
     return Frame::from_normal_and_tangent(tangent.to_world(m / len), ctx.dpdu);
   }
 
-  static BsdfContext nested_context(const BsdfContext& ctx, const Frame& f) {
-    BsdfContext out = ctx;
-    out.dpdu = f.to_local(ctx.dpdu);
-    out.dpdv = f.to_local(ctx.dpdv);
-    return out;
-  }
-
   std::shared_ptr<Texture> normals_;
-  std::shared_ptr<Bsdf> nested_;
 };
 
 }  // namespace
