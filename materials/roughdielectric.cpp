@@ -28,6 +28,7 @@
 // Parameters
 //   distribution            string   "beckmann"  microfacet distribution: "beckmann" or "ggx"
 //   alpha                   float    0.1         roughness (the RMS slope for Beckmann)
+//   sample_visible          boolean  true        sample only the facet normals visible from wo
 //   alpha_u, alpha_v        float    -           anisotropic roughness along the tangent and
 //                                                the bitangent, instead of alpha; both or neither
 //   int_ior                 ior      "bk7"       index of refraction inside (below the normal);
@@ -82,7 +83,8 @@ class RoughDielectricBsdf final : public Bsdf {
       : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
         distribution_(make_distribution(props)),
         reflectance_(props.get_texture("specular_reflectance")),
-        transmittance_(props.get_texture("specular_transmittance")) {}
+        transmittance_(props.get_texture("specular_transmittance")),
+        sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
@@ -104,7 +106,7 @@ class RoughDielectricBsdf final : public Bsdf {
       return BsdfSample{-wo, transmittance_->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
     // Facets are seen from wo's side; the distribution is symmetric under
     // m -> (-m.x, -m.y, m.z), so wo inside samples as -wo outside.
-    const Vec3 m = distribution_.sample(wo.z > 0 ? wo : -wo, u);
+    const Vec3 m = sample_visible_ ? distribution_.sample(wo.z > 0 ? wo : -wo, u) : distribution_.sample_D(u);
     const float wo_m = dot(wo, m);
     if (wo_m * wo.z <= 0) return std::nullopt;  // a back-facing facet (Beckmann samples those)
     const DielectricFresnel fr = fresnel_dielectric(wo_m, eta_);
@@ -157,7 +159,7 @@ class RoughDielectricBsdf final : public Bsdf {
     const float D = distribution_.D(m), G = distribution_.G(wo, wi, m);
     const float wo_m = dot(wo, m), wi_m = dot(wi, m);
     // Density of the facet normal as sampled from wo's side.
-    const float pdf_m = distribution_.pdf(wo.z > 0 ? wo : -wo, m);
+    const float pdf_m = sample_visible_ ? distribution_.pdf(wo.z > 0 ? wo : -wo, m) : distribution_.pdf_D(m);
     if (!(D > 0) || !(pdf_m > 0)) return {};
     const float F = fresnel_dielectric(wo_m, eta_).F;
     const float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
@@ -181,6 +183,7 @@ class RoughDielectricBsdf final : public Bsdf {
   float eta_;  // int_ior / ext_ior
   MicrofacetDistribution distribution_;
   std::shared_ptr<Texture> reflectance_, transmittance_;
+  bool sample_visible_;
 };
 
 }  // namespace
@@ -193,7 +196,8 @@ CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric",
                           {"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
                           {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
                           {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
-                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
+                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"},
+                          {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}},
                          {});
 
 }  // namespace caustica

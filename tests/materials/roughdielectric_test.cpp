@@ -281,3 +281,28 @@ TEST(RoughDielectricBsdf, BadParameters) {
 
 }  // namespace
 }  // namespace caustica
+
+namespace caustica {
+namespace {
+
+// sample_visible = false draws facet normals from D(m) cos(theta_m) instead;
+// sampling and pdf must still agree (2 chi-square tests, counted in
+// kMaterialChi2Tests).
+TEST(RoughDielectricBsdf, SamplingAllNormalsAgreesWithItsPdf) {
+  const auto bsdf = test::make_bsdf(
+      "<bsdf type='roughdielectric'><float name='alpha' value='0.3'/><boolean name='sample_visible' value='false'/>"
+      "</bsdf>");
+  for (float theta : {0.4f, 2.5f}) {  // from outside and from inside
+    const Vec3 wo = test::direction(theta);
+    const auto chi2 = test::chi2_bsdf(*bsdf, wo, {}, {.sample_count = 200000, .bins_u = 40, .bins_v = 80});
+    EXPECT_GT(chi2.p_value, test::material_chi2_alpha()) << "theta " << theta << "\n" << chi2.report;
+    const auto c = test::check_samples(*bsdf, wo, {}, 2000);
+    EXPECT_GT(c.checked, 1000);
+    EXPECT_LT(c.max_f_error, 1e-4);
+    EXPECT_LT(c.max_pdf_error, 1e-4);
+    EXPECT_EQ(c.non_finite, 0);
+  }
+}
+
+}  // namespace
+}  // namespace caustica
