@@ -46,23 +46,6 @@
 namespace caustica {
 namespace {
 
-// Internal diffuse reflectance of a smooth interface with relative index
-// eta (inside over outside): 2 int_0^1 F(-mu) mu dmu, the cosine-weighted
-// mean of the Fresnel reflectance for light arriving from inside. Below the
-// critical cosine mu_c all light is reflected; above it F has a square-root
-// kink at mu_c, smoothed away by mu = mu_c + (1 - mu_c) s^2 before Simpson's rule.
-float internal_diffuse_reflectance(float eta) {
-  const double mu_c = eta > 1 ? std::sqrt(1 - 1 / (double(eta) * eta)) : 0.0;
-  const int n = 1024;  // even
-  double sum = 0;
-  for (int i = 0; i <= n; ++i) {
-    const double s = double(i) / n, mu = mu_c + (1 - mu_c) * s * s;
-    const double value = fresnel_dielectric(float(-mu), eta).F * mu * 2 * (1 - mu_c) * s;
-    sum += value * (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2));
-  }
-  return float(mu_c * mu_c + 2 * sum / (3 * n));
-}
-
 Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
 
 class PlasticBsdf final : public Bsdf {

@@ -31,31 +31,11 @@
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/conductor_data.h"
 #include "core/bsdf/fresnel.h"
-#include "core/bsdf/microfacet.h"
+#include "core/bsdf/microfacet_params.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
-
-MicrofacetDistribution make_distribution(const Properties& props) {
-  MicrofacetDistribution::Type type;
-  try {
-    type = MicrofacetDistribution::parse_type(props.get_string("distribution"));
-  } catch (const std::invalid_argument& e) {
-    throw props.error("distribution", e.what());
-  }
-  const auto roughness = [&](const char* name) {
-    const float alpha = props.has(name) ? props.get_float(name) : props.get_float("alpha");
-    if (!(alpha >= 0) || !std::isfinite(alpha))
-      throw props.error(props.has(name) ? name : "alpha", "roughness must be finite and not negative");
-    return alpha;
-  };
-  if (props.has("alpha") && (props.has("alpha_u") || props.has("alpha_v")))
-    throw props.error("alpha", "give either alpha or alpha_u and alpha_v, not both");
-  if (props.has("alpha_u") != props.has("alpha_v"))
-    throw props.error(props.has("alpha_u") ? "alpha_u" : "alpha_v", "alpha_u and alpha_v go together");
-  return MicrofacetDistribution(type, roughness("alpha_u"), roughness("alpha_v"));
-}
 
 // The normal reflecting wo into wi, both above the surface; +z where the
 // two are opposite grazing directions.
@@ -68,7 +48,7 @@ Vec3 half_vector(Vec3 wo, Vec3 wi) {
 class RoughConductorBsdf final : public Bsdf {
  public:
   explicit RoughConductorBsdf(const Properties& props)
-      : distribution_(make_distribution(props)),
+      : distribution_(microfacet_from(props)),
         ior_(conductor_ior(props)),
         specular_reflectance_(props.get_texture("specular_reflectance")),
         sample_visible_(props.get_bool("sample_visible")) {}
@@ -122,18 +102,18 @@ class RoughConductorBsdf final : public Bsdf {
   bool sample_visible_;
 };
 
+std::vector<ParamSpec> params() {
+  auto p = microfacet_params(true);
+  p.insert(p.end(), {{"material", ParamType::String, "none", "named metal, or none for eta and k"},
+                     {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
+                     {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
+                     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"},
+                     {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}});
+  return p;
+}
+
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughConductorBsdf, "bsdf", "roughconductor",
-                         {{"distribution", ParamType::String, "beckmann", "beckmann or ggx"},
-                          {"alpha", ParamType::Float, "0.1", "isotropic roughness"},
-                          {"alpha_u", ParamType::Float, "0.1", "roughness along the tangent"},
-                          {"alpha_v", ParamType::Float, "0.1", "roughness along the bitangent"},
-                          {"material", ParamType::String, "none", "named metal, or none for eta and k"},
-                          {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
-                          {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
-                          {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"},
-                          {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(RoughConductorBsdf, "bsdf", "roughconductor", params(), {});
 
 }  // namespace caustica

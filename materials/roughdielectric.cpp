@@ -48,40 +48,17 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/fresnel.h"
-#include "core/bsdf/microfacet.h"
+#include "core/bsdf/microfacet_params.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
 
-float read_alpha(const Properties& props, const std::string& name) {
-  const float alpha = props.get_float(name);
-  if (!(alpha >= 0) || !std::isfinite(alpha)) throw props.error(name, "a roughness must be finite and at least 0");
-  return alpha;
-}
-
-MicrofacetDistribution make_distribution(const Properties& props) {
-  MicrofacetDistribution::Type type;
-  try {
-    type = MicrofacetDistribution::parse_type(props.get_string("distribution"));
-  } catch (const std::invalid_argument& e) {
-    throw props.error("distribution", e.what());
-  }
-  const bool has_u = props.has("alpha_u"), has_v = props.has("alpha_v");
-  if (has_u != has_v) throw props.error(has_u ? "alpha_u" : "alpha_v", "give both alpha_u and alpha_v, or alpha");
-  if (!has_u) {
-    const float alpha = read_alpha(props, "alpha");
-    return {type, alpha, alpha};
-  }
-  if (props.has("alpha")) throw props.error("alpha", "give either alpha or alpha_u and alpha_v, not both");
-  return {type, read_alpha(props, "alpha_u"), read_alpha(props, "alpha_v")};
-}
-
 class RoughDielectricBsdf final : public Bsdf {
  public:
   explicit RoughDielectricBsdf(const Properties& props)
       : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
-        distribution_(make_distribution(props)),
+        distribution_(microfacet_from(props)),
         reflectance_(props.get_texture("specular_reflectance")),
         transmittance_(props.get_texture("specular_transmittance")),
         sample_visible_(props.get_bool("sample_visible")) {}
@@ -186,18 +163,18 @@ class RoughDielectricBsdf final : public Bsdf {
   bool sample_visible_;
 };
 
+std::vector<ParamSpec> params() {
+  auto p = microfacet_params(true);
+  p.insert(p.end(), {{"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
+                     {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+                     {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
+                     {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"},
+                     {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}});
+  return p;
+}
+
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric",
-                         {{"distribution", ParamType::String, "beckmann", "microfacet distribution: beckmann or ggx"},
-                          {"alpha", ParamType::Float, "0.1", "roughness"},
-                          {"alpha_u", ParamType::Float, std::nullopt, "roughness along the tangent, with alpha_v"},
-                          {"alpha_v", ParamType::Float, std::nullopt, "roughness along the bitangent, with alpha_u"},
-                          {"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
-                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
-                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"},
-                          {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric", params(), {});
 
 }  // namespace caustica

@@ -51,7 +51,7 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/fresnel.h"
-#include "core/bsdf/microfacet.h"
+#include "core/bsdf/microfacet_params.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -59,40 +59,10 @@
 namespace caustica {
 namespace {
 
-// Internal diffuse reflectance of a smooth interface of relative index eta
-// (as in plastic.cpp): 2 int_0^1 F(-mu) mu dmu, total below the critical
-// cosine mu_c, Simpson's rule above it after mu = mu_c + (1 - mu_c) s^2
-// removes the square-root kink at mu_c.
-float internal_diffuse_reflectance(float eta) {
-  const double mu_c = eta > 1 ? std::sqrt(1 - 1 / (double(eta) * eta)) : 0.0;
-  const int n = 1024;  // even
-  double sum = 0;
-  for (int i = 0; i <= n; ++i) {
-    const double s = double(i) / n, mu = mu_c + (1 - mu_c) * s * s;
-    const double value = fresnel_dielectric(float(-mu), eta).F * mu * 2 * (1 - mu_c) * s;
-    sum += value * (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2));
-  }
-  return float(mu_c * mu_c + 2 * sum / (3 * n));
-}
-
-MicrofacetDistribution::Type distribution_type(const Properties& props) {
-  try {
-    return MicrofacetDistribution::parse_type(props.get_string("distribution"));
-  } catch (const std::invalid_argument& e) {
-    throw props.error("distribution", e.what());
-  }
-}
-
-float checked_alpha(const Properties& props) {
-  const float alpha = props.get_float("alpha");
-  if (!(alpha >= 0) || !std::isfinite(alpha)) throw props.error("alpha", "must be a finite number of 0 or more");
-  return alpha;
-}
-
 class RoughPlasticBsdf final : public Bsdf {
  public:
   explicit RoughPlasticBsdf(const Properties& props)
-      : dist_(distribution_type(props), checked_alpha(props), checked_alpha(props)),
+      : dist_(microfacet_from(props)),
         kd_(props.get_texture("diffuse_reflectance")),
         ks_(props.get_texture("specular_reflectance")),
         eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
@@ -224,16 +194,18 @@ class RoughPlasticBsdf final : public Bsdf {
   float mean_albedo_ = 0;
 };
 
+std::vector<ParamSpec> params() {
+  auto p = microfacet_params(false);
+  p.insert(p.end(), {{"diffuse_reflectance", ParamType::Texture, "0.5", "reflectance of the diffuse base"},
+                     {"specular_reflectance", ParamType::Texture, "1", "scale of the coating's reflection"},
+                     {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating"},
+                     {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+                     {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}});
+  return p;
+}
+
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughPlasticBsdf, "bsdf", "roughplastic",
-                         {{"distribution", ParamType::String, "beckmann", "microfacet distribution: beckmann or ggx"},
-                          {"alpha", ParamType::Float, "0.1", "roughness"},
-                          {"diffuse_reflectance", ParamType::Texture, "0.5", "reflectance of the diffuse base"},
-                          {"specular_reflectance", ParamType::Texture, "1", "scale of the coating's reflection"},
-                          {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating"},
-                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                          {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(RoughPlasticBsdf, "bsdf", "roughplastic", params(), {});
 
 }  // namespace caustica

@@ -52,6 +52,13 @@ inline Color fresnel_conductor(float cos_i, Color eta, Color k) {
           fresnel_conductor(cos_i, eta.b, k.b)};
 }
 
+// Internal diffuse reflectance of a smooth interface with relative index
+// eta (inside over outside): 2 int_0^1 F(-mu) mu dmu, the cosine-weighted
+// mean of the Fresnel reflectance for light arriving from inside. Below the
+// critical cosine mu_c all light is reflected; above it F has a square-root
+// kink at mu_c, smoothed away by mu = mu_c + (1 - mu_c) s^2 before Simpson's rule.
+float internal_diffuse_reflectance(float eta);
+
 // Mirror reflection about the normal m (wi, m and the result unit length).
 inline Vec3 reflect(Vec3 w, Vec3 m) { return m * (2 * dot(w, m)) - w; }
 

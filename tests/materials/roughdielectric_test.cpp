@@ -273,7 +273,7 @@ TEST(RoughDielectricBsdf, BadParameters) {
   EXPECT_THAT(error_of("<float name='alpha' value='0.2'/><float name='alpha_u' value='0.2'/>"
                        "<float name='alpha_v' value='0.2'/>"),
               testing::HasSubstr("not both"));
-  EXPECT_THAT(error_of("<float name='alpha' value='-0.1'/>"), testing::HasSubstr("at least 0"));
+  EXPECT_THAT(error_of("<float name='alpha' value='-0.1'/>"), testing::HasSubstr("not negative"));
   EXPECT_EQ(error_of("<string name='distribution' value='ggx'/><float name='alpha_u' value='0.05'/>"
                      "<float name='alpha_v' value='0.3'/>"),
             "no error");
