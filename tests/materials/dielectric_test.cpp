@@ -10,24 +10,18 @@
 namespace caustica {
 namespace {
 
+using test::below;
 using test::direction;
-
-const BsdfContext kRadiance{TransportMode::Radiance, {}};
-const BsdfContext kImportance{TransportMode::Importance, {}};
+using test::kImportance;
+using test::kRadiance;
+using test::sample_weight;
 
 // Chi-square tests of the lobe choice in this file: 4 incident angles from
 // outside, 2 from inside (the others reflect totally) (counted in kMaterialChi2Tests).
 const double kAlpha = test::material_chi2_alpha();
 
-Vec3 below(Vec3 w) { return {w.x, w.y, -w.z}; }
-
-float weight(const BsdfSample& s) { return s.f.g * std::abs(s.wi.z) / s.pdf; }
-
-// eta = int_ior / ext_ior, with the smaller index 1.
 std::shared_ptr<Bsdf> glass(float eta) {
-  const float int_ior = std::max(eta, 1.0f), ext_ior = int_ior / eta;
-  return test::make_bsdf("<bsdf type='dielectric'><float name='int_ior' value='" + std::to_string(int_ior) +
-                         "'/><float name='ext_ior' value='" + std::to_string(ext_ior) + "'/></bsdf>");
+  return test::make_bsdf("<bsdf type='dielectric'>" + test::ior_params(eta) + "</bsdf>");
 }
 
 TEST(DielectricBsdf, ReflectsAndRefractsWithFresnelProbabilities) {
@@ -62,7 +56,7 @@ TEST(DielectricBsdf, ReflectsAndRefractsWithFresnelProbabilities) {
           EXPECT_EQ(s->eta, 1);
           EXPECT_FLOAT_EQ(s->pdf, F);
         }
-        EXPECT_NEAR(weight(*s), 1, 1e-6f);  // importance: every sample carries exactly 1
+        EXPECT_NEAR(sample_weight(*s), 1, 1e-6f);  // importance: every sample carries exactly 1
         EXPECT_NEAR(length(s->wi), 1, 1e-6f);
       }
       if (F == 1) {  // total internal reflection
@@ -149,7 +143,7 @@ TEST(DielectricBsdf, TotalInternalReflection) {
         EXPECT_EQ(s->lobe, kDeltaReflection);
         EXPECT_EQ(s->pdf, 1);
         EXPECT_EQ(s->wi, Vec3(-wo.x, -wo.y, wo.z));
-        EXPECT_NEAR(weight(*s), 1, 1e-6f);
+        EXPECT_NEAR(sample_weight(*s), 1, 1e-6f);
       }
   }
 }
@@ -168,7 +162,7 @@ TEST(DielectricBsdf, IndexMatchedPassesStraightThrough) {
           EXPECT_EQ(s->wi, -wo);
           EXPECT_EQ(s->pdf, 1);
           EXPECT_EQ(s->eta, 1);
-          EXPECT_FLOAT_EQ(weight(*s), 1);
+          EXPECT_FLOAT_EQ(sample_weight(*s), 1);
           EXPECT_EQ(bsdf->albedo({mode, {}}, wo).b, 1);
         }
 }

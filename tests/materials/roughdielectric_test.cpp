@@ -13,23 +13,15 @@
 namespace caustica {
 namespace {
 
+using test::below;
 using test::direction;
-
-const BsdfContext kRadiance{TransportMode::Radiance, {}};
-const BsdfContext kImportance{TransportMode::Importance, {}};
-
-Vec3 below(Vec3 w) { return {w.x, w.y, -w.z}; }
-
-// eta = int_ior / ext_ior, with the smaller index 1.
-std::string iors(float eta) {
-  const float int_ior = std::max(eta, 1.0f), ext_ior = int_ior / eta;
-  return "<float name='int_ior' value='" + std::to_string(int_ior) + "'/><float name='ext_ior' value='" +
-         std::to_string(ext_ior) + "'/>";
-}
+using test::kImportance;
+using test::kRadiance;
 
 std::shared_ptr<Bsdf> rough(const std::string& distribution, float alpha, float eta) {
   return test::make_bsdf("<bsdf type='roughdielectric'><string name='distribution' value='" + distribution +
-                         "'/><float name='alpha' value='" + std::to_string(alpha) + "'/>" + iors(eta) + "</bsdf>");
+                         "'/><float name='alpha' value='" + std::to_string(alpha) + "'/>" + test::ior_params(eta) +
+                         "</bsdf>");
 }
 
 struct Config {
@@ -88,7 +80,7 @@ TEST(RoughDielectricBsdf, AnisotropicSamplesFollowThePdf) {
   for (const char* d : {"beckmann", "ggx"}) {
     const auto bsdf = test::make_bsdf(std::string("<bsdf type='roughdielectric'><string name='distribution' value='") +
                                       d + "'/><float name='alpha_u' value='0.1'/><float name='alpha_v' value='0.4'/>" +
-                                      iors(1.5f) + "</bsdf>");
+                                      test::ior_params(1.5f) + "</bsdf>");
     for (Vec3 wo : {direction(0.9f, 1.0f), below(direction(0.5f, 2.0f))}) {
       const auto chi2 = test::chi2_bsdf(*bsdf, wo, kRadiance, {.sample_count = 100000, .bins_u = 20, .bins_v = 40});
       EXPECT_GT(chi2.p_value, kAlpha) << d << " wo.z " << wo.z << "\n" << chi2.report;
@@ -174,7 +166,7 @@ TEST(RoughDielectricBsdf, WhiteFurnace) {
 TEST(RoughDielectricBsdf, NearlySmoothMatchesDielectric) {
   for (const char* d : {"beckmann", "ggx"}) {
     const auto bsdf = rough(d, 1e-3f, 1.5f);
-    const auto smooth = test::make_bsdf("<bsdf type='dielectric'>" + iors(1.5f) + "</bsdf>");
+    const auto smooth = test::make_bsdf("<bsdf type='dielectric'>" + test::ior_params(1.5f) + "</bsdf>");
     for (Vec3 wo : {direction(0.0f), direction(1.0f), direction(1.5f), below(direction(0.5f))}) {
       expect_consistent(*bsdf, wo, d);
       for (const BsdfContext& ctx : {kRadiance, kImportance}) {

@@ -10,23 +10,17 @@
 namespace caustica {
 namespace {
 
+using test::below;
 using test::direction;
-
-const BsdfContext kRadiance{TransportMode::Radiance, {}};
-const BsdfContext kImportance{TransportMode::Importance, {}};
+using test::kImportance;
+using test::kRadiance;
+using test::sample_weight;
 
 // Chi-square tests of the lobe choice in this file: 4 angles x 2 sides (counted in kMaterialChi2Tests).
 const double kAlpha = test::material_chi2_alpha();
 
-Vec3 below(Vec3 w) { return {w.x, w.y, -w.z}; }
-
-float weight(const BsdfSample& s) { return s.f.g * std::abs(s.wi.z) / s.pdf; }
-
-// eta = int_ior / ext_ior, with the smaller index 1.
 std::shared_ptr<Bsdf> sheet(float eta) {
-  const float int_ior = std::max(eta, 1.0f), ext_ior = int_ior / eta;
-  return test::make_bsdf("<bsdf type='thindielectric'><float name='int_ior' value='" + std::to_string(int_ior) +
-                         "'/><float name='ext_ior' value='" + std::to_string(ext_ior) + "'/></bsdf>");
+  return test::make_bsdf("<bsdf type='thindielectric'>" + test::ior_params(eta) + "</bsdf>");
 }
 
 // The sheet's reflectance summed bounce by bounce: R, then T R T, T R^3 T, ...
@@ -51,7 +45,7 @@ TEST(ThinDielectricBsdf, LobesFollowTheInterreflectedFresnelTerms) {
         const auto s = bsdf->sample(kImportance, wo, u_lobe, u.next_2d());
         ASSERT_TRUE(s);
         EXPECT_EQ(s->eta, 1);
-        EXPECT_NEAR(weight(*s), 1, 1e-6f);
+        EXPECT_NEAR(sample_weight(*s), 1, 1e-6f);
         if (s->is_transmission()) {
           observed[1] += 1;
           EXPECT_EQ(s->lobe, kDeltaTransmission);
@@ -102,7 +96,7 @@ TEST(ThinDielectricBsdf, TotalInternalReflectionAtTheFirstFace) {
       ASSERT_TRUE(s);
       EXPECT_EQ(s->lobe, kDeltaReflection);
       EXPECT_EQ(s->pdf, 1);
-      EXPECT_NEAR(weight(*s), 1, 1e-6f);
+      EXPECT_NEAR(sample_weight(*s), 1, 1e-6f);
     }
 }
 
@@ -114,7 +108,7 @@ TEST(ThinDielectricBsdf, IndexMatchedAndDegenerateDirections) {
     EXPECT_EQ(s->lobe, kDeltaTransmission);
     EXPECT_EQ(s->wi, -direction(theta));
     EXPECT_EQ(s->pdf, 1);
-    EXPECT_FLOAT_EQ(weight(*s), 1);
+    EXPECT_FLOAT_EQ(sample_weight(*s), 1);
   }
   const auto bsdf = test::make_bsdf("<bsdf type='thindielectric'/>");
   EXPECT_EQ(bsdf->lobes(), kDeltaReflection | kDeltaTransmission);
@@ -134,7 +128,7 @@ TEST(ThinDielectricBsdf, SpecularScalesApplyPerLobe) {
   const Vec3 wo = direction(0.6f);
   const auto r = bsdf->sample(kImportance, wo, 0, {}), t = bsdf->sample(kImportance, wo, 0.999f, {});
   ASSERT_TRUE(r && t);
-  EXPECT_NEAR(weight(*r), 0.25f, 1e-6f);
+  EXPECT_NEAR(sample_weight(*r), 0.25f, 1e-6f);
   EXPECT_NEAR(t->f.b * std::abs(t->wi.z) / t->pdf, 0.8f, 1e-6f);
 }
 

@@ -13,6 +13,12 @@ std::shared_ptr<Bsdf> make_bsdf(const std::string& element) {
   return scene->shapes().front()->bsdf();
 }
 
+std::string ior_params(float eta) {
+  const float int_ior = std::max(eta, 1.0f), ext_ior = int_ior / eta;
+  return "<float name='int_ior' value='" + std::to_string(int_ior) + "'/><float name='ext_ior' value='" +
+         std::to_string(ext_ior) + "'/>";
+}
+
 Vec3 direction(float theta, float phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }

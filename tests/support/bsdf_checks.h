@@ -4,6 +4,7 @@
 // chi-square of sample() against pdf(), sample/eval/pdf agreement, pdf
 // normalisation, reciprocity and energy (white furnace).
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,19 @@ namespace caustica::test {
 // false failure in the whole set at 1%. A file adding tests adds them here.
 inline constexpr int kMaterialChi2Tests = 234;
 inline double material_chi2_alpha() { return sidak_alpha(0.01, kMaterialChi2Tests); }
+
+inline const BsdfContext kRadiance{TransportMode::Radiance, {}};
+inline const BsdfContext kImportance{TransportMode::Importance, {}};
+
+// w mirrored through the surface, to the other side.
+inline Vec3 below(Vec3 w) { return {w.x, w.y, -w.z}; }
+
+// A sample's throughput weight f |cos| / pdf (green channel).
+inline float sample_weight(const BsdfSample& s) { return s.f.g * std::abs(s.wi.z) / s.pdf; }
+
+// int_ior and ext_ior elements giving the relative index eta, the smaller
+// of the two indices being 1.
+std::string ior_params(float eta);
 
 // A BSDF from its XML element, e.g. "<bsdf type='diffuse'/>", through the
 // scene loader (so parameters are parsed exactly as in a scene file).
