@@ -37,7 +37,7 @@ class AovIntegrator final : public Integrator {
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
 
-  void sample(const Scene& scene, const Ray& ray, Sampler&, std::span<float> out) const override {
+  void sample(const Scene& scene, const Ray& ray, Sampler&, std::span<float> out, SplatList&) const override {
     evaluator_.evaluate(scene, ray, out);
   }
 

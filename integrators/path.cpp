@@ -2,7 +2,7 @@
 // samples an emitter and the BSDF, and both strategies are combined by
 // multiple importance sampling (power heuristic).
 //
-// Parameters
+// Parameters (core/render/path_settings.h)
 //   max_depth         integer  -1     longest path in segments from the camera; -1 for no
 //                                      limit, 0 renders black, 1 shows emitters only, 2 direct
 //                                      light only
@@ -23,6 +23,7 @@
 #include "core/bsdf/surface_bsdf.h"
 #include "core/registry/properties.h"
 #include "core/render/direct_light.h"
+#include "core/render/path_settings.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
 
@@ -31,17 +32,11 @@ namespace {
 
 class PathIntegrator final : public RadianceIntegrator {
  public:
-  explicit PathIntegrator(const Properties& props)
-      : max_depth_(read_max_depth(props)),
-        rr_depth_(props.get_int("rr_depth")),
-        rr_max_survival_(props.get_float("rr_max_survival")),
-        hide_emitters_(props.get_bool("hide_emitters")) {
-    if (rr_depth_ < 1) throw props.error("rr_depth", "must be at least 1");
-    if (!(rr_max_survival_ > 0 && rr_max_survival_ <= 1)) throw props.error("rr_max_survival", "must be in (0, 1]");
-  }
+  explicit PathIntegrator(const Properties& props) : settings_(read_path_settings(props)) {}
 
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    if (max_depth_ == 0) return {};
+    const auto& [max_depth, rr_depth, rr_max_survival, hide_emitters] = settings_;
+    if (max_depth == 0) return {};
     Color L, beta(1);
     float eta_scale = 1;
     bool specular = true;  // the camera ray counts as a specular "bounce"
@@ -49,7 +44,7 @@ class PathIntegrator final : public RadianceIntegrator {
     SurfaceInteraction prev;
     for (int64_t depth = 0;; ++depth) {
       const auto si = scene.intersect(ray);
-      const bool show = depth > 0 || !hide_emitters_;
+      const bool show = depth > 0 || !hide_emitters;
       if (!si) {
         for (const Emitter* env : scene.infinite_emitters()) {
           const Color Le = env->Le_infinite(ray.d);
@@ -67,7 +62,7 @@ class PathIntegrator final : public RadianceIntegrator {
           L += beta * Le * w;
         }
       }
-      if (max_depth_ >= 0 && depth + 1 >= max_depth_) break;
+      if (max_depth >= 0 && depth + 1 >= max_depth) break;
 
       const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, TransportMode::Radiance);
       const Vec3 wo = -ray.d;
@@ -85,8 +80,8 @@ class PathIntegrator final : public RadianceIntegrator {
       prev = *si;
       ray = si->spawn(bs->wi);
 
-      if (depth + 1 >= rr_depth_) {
-        const float q = std::min(beta.max_component() * eta_scale, rr_max_survival_);
+      if (depth + 1 >= rr_depth) {
+        const float q = std::min(beta.max_component() * eta_scale, rr_max_survival);
         if (!(sampler.next_1d() < q)) break;
         beta *= 1 / q;
       }
@@ -94,25 +89,14 @@ class PathIntegrator final : public RadianceIntegrator {
     return L;
   }
 
-  std::string describe() const override {
-    return "path max_depth=" + std::to_string(max_depth_) + " rr_depth=" + std::to_string(rr_depth_) +
-           " rr_max_survival=" + std::to_string(rr_max_survival_) +
-           " hide_emitters=" + (hide_emitters_ ? "true" : "false");
-  }
+  std::string describe() const override { return caustica::describe("path", settings_); }
 
  private:
-  int64_t max_depth_, rr_depth_;
-  float rr_max_survival_;
-  bool hide_emitters_;
+  PathSettings settings_;
 };
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(PathIntegrator, "integrator", "path",
-                         {{"max_depth", ParamType::Integer, "-1", "longest path, -1 for unlimited"},
-                          {"rr_depth", ParamType::Integer, "5", "depth where Russian roulette starts"},
-                          {"rr_max_survival", ParamType::Float, "0.95", "bound on the survival probability"},
-                          {"hide_emitters", ParamType::Boolean, "false", "hide directly visible emitters"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(PathIntegrator, "integrator", "path", path_settings_params(), {});
 
 }  // namespace caustica

@@ -51,7 +51,8 @@ std::string replay_command(const std::string& scene, SampleId id, uint64_t seed)
 
 // The EXR's layers: the integrator's channels, then for radiance the
 // first-hit AOVs, the per-pixel variance of the estimate and the number of
-// samples each pixel received.
+// samples each pixel received. Splatted light reaches a pixel from other
+// pixels' samples, so its variance is unknown there and the layer is left out.
 Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
   Image image{film.width(), film.height(), film.channels(), film.resolve()};
   if (!aovs) return image;
@@ -60,14 +61,17 @@ Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
   const size_t na = aovs->channel_count(), nc = film.channel_count();
   std::vector<std::string> names = film.channels();
   for (const auto& c : aovs->channels()) names.push_back(c);
-  for (const char* c : {"variance.R", "variance.G", "variance.B", "samples.Y"}) names.push_back(c);
+  const bool variance_known = !film.has_splats();
+  if (variance_known)
+    for (const char* c : {"variance.R", "variance.G", "variance.B"}) names.push_back(c);
+  names.push_back("samples.Y");
   const size_t total = names.size();
   std::vector<float> pixels_out(pixels * total);
   for (size_t p = 0; p < pixels; ++p) {
     float* out = &pixels_out[p * total];
     std::copy_n(&image.pixels[p * nc], nc, out);
     std::copy_n(&aov[p * na], na, out + nc);
-    std::copy_n(&variance[p * 3], 3, out + nc + na);
+    if (variance_known) std::copy_n(&variance[p * 3], 3, out + nc + na);
     out[total - 1] = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
   }
   return {film.width(), film.height(), names, pixels_out};
@@ -82,9 +86,14 @@ int RenderCommand::replay(const Scene& scene) const {
   std::istringstream in(debug_pixel_);
   if (!(in >> x >> comma >> y) || comma != ',' || x < 0 || y < 0 || x >= film.width() || y >= film.height())
     throw std::invalid_argument("--debug-pixel expects X,Y inside the film, got '" + debug_pixel_ + "'");
-  const auto values = replay_sample(scene, {x, y}, debug_sample_, seed_);
+  const ReplayedSample sample = replay_sample(scene, {x, y}, debug_sample_, seed_);
   const auto names = scene.integrator()->channels();
-  for (size_t c = 0; c < values.size(); ++c) std::printf("%s = %.9g\n", names[c].c_str(), values[c]);
+  for (size_t c = 0; c < sample.values.size(); ++c) std::printf("%s = %.9g\n", names[c].c_str(), sample.values[c]);
+  for (const Splat& s : sample.splats.splats())
+    std::printf("splat at (%.3f, %.3f) to %s: %.9g %.9g %.9g\n", s.raster.x, s.raster.y, names[s.channel].c_str(),
+                s.value.r, s.value.g, s.value.b);
+  if (sample.splats.dropped() > 0)
+    std::printf("%llu non-finite splats dropped\n", (unsigned long long)sample.splats.dropped());
   return 0;
 }
 

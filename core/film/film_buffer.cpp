@@ -4,6 +4,9 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/film/reconstruction_filter.h"
+#include "core/film/splat_list.h"
+
 namespace caustica {
 
 FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels)
@@ -21,10 +24,7 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   bool finite = std::isfinite(weight);
   for (float v : values) finite = finite && std::isfinite(v);
   if (!finite) {
-    dropped_->count.fetch_add(1);
-    std::lock_guard lock(dropped_->mutex);
-    const auto key = [](SampleId s) { return std::tuple(s.pixel.y, s.pixel.x, s.index); };
-    if (dropped_->first.pixel.x < 0 || key(id) < key(dropped_->first)) dropped_->first = id;
+    dropped_->record(id, 1);
     return;
   }
   const size_t p = index(id.pixel);
@@ -40,12 +40,55 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   }
 }
 
+void FilmBuffer::DropLog::record(SampleId id, uint64_t n) {
+  count.fetch_add(n);
+  std::lock_guard lock(mutex);
+  const auto key = [](SampleId s) { return std::tuple(s.pixel.y, s.pixel.x, s.index); };
+  if (first.pixel.x < 0 || key(id) < key(first)) first = id;
+}
+
+void FilmBuffer::add_splats(const SplatList& list, const ReconstructionFilter& filter, int y_begin, int y_end) {
+  const float r = filter.radius();
+  const double norm = 1.0 / (double(filter.integral()) * filter.integral());
+  const size_t nc = channels_.size();
+  for (const Splat& s : list.splats()) {
+    // Pixel centres sit at half-integers; these are the ones within r.
+    const int y0 = std::max(y_begin, int(std::ceil(s.raster.y - 0.5f - r)));
+    const int y1 = std::min(y_end - 1, int(std::floor(s.raster.y - 0.5f + r)));
+    if (y0 > y1) continue;
+    const int x0 = std::max(0, int(std::ceil(s.raster.x - 0.5f - r)));
+    const int x1 = std::min(width_ - 1, int(std::floor(s.raster.x - 0.5f + r)));
+    for (int y = y0; y <= y1; ++y) {
+      const float fy = filter.eval(s.raster.y - (y + 0.5f));
+      if (fy == 0) continue;
+      for (int x = x0; x <= x1; ++x) {
+        const double w = norm * fy * filter.eval(s.raster.x - (x + 0.5f));
+        if (w == 0) continue;
+        double* sum = &splat_sum_[index({x, y}) * nc + s.channel];
+        sum[0] += w * s.value.r;
+        sum[1] += w * s.value.g;
+        sum[2] += w * s.value.b;
+      }
+    }
+  }
+}
+
+void FilmBuffer::enable_splats() {
+  if (splat_sum_.empty()) splat_sum_.assign(weighted_sum_.size(), 0);
+}
+
+void FilmBuffer::record_dropped(const SplatList& list) {
+  if (list.dropped() > 0) dropped_->record(list.first_dropped(), list.dropped());
+}
+
 std::vector<float> FilmBuffer::resolve() const {
   std::vector<float> out(weighted_sum_.size(), 0);
   const size_t nc = channels_.size();
   for (size_t p = 0; p < weight_sum_.size(); ++p)
     if (weight_sum_[p] != 0)
       for (size_t c = 0; c < nc; ++c) out[p * nc + c] = float(weighted_sum_[p * nc + c] / weight_sum_[p]);
+  if (!splat_sum_.empty() && splat_paths_per_pixel_ > 0)
+    for (size_t i = 0; i < out.size(); ++i) out[i] += float(splat_sum_[i] / double(splat_paths_per_pixel_));
   return out;
 }
 

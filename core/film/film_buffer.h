@@ -12,6 +12,9 @@
 
 namespace caustica {
 
+class ReconstructionFilter;
+class SplatList;
+
 // Where a sample that was dropped came from, so it can be replayed.
 struct SampleId {
   Vec2i pixel;
@@ -19,9 +22,10 @@ struct SampleId {
 };
 
 // Per-pixel accumulation of filter-weighted samples over named channels, with
-// the moments of the first three (the beauty) for variance estimates. This is
-// the one place samples enter an image: NaN and Inf are dropped and counted
-// here, never averaged in.
+// the moments of the first three (the beauty) for variance estimates, plus
+// an optional splat image for contributions that land on other pixels than
+// their sample's. This is the one place samples enter an image: NaN and Inf
+// are dropped and counted here, never averaged in.
 class FilmBuffer {
  public:
   FilmBuffer(int width, int height, std::vector<std::string> channels);
@@ -34,11 +38,25 @@ class FilmBuffer {
   // Safe to call concurrently for different pixels.
   void add_sample(SampleId id, std::span<const float> values, float weight);
 
-  // The weighted mean of each channel, pixel-interleaved.
+  // Makes room for the splat image; call before splats arrive.
+  void enable_splats();
+  // Adds the splats that fall on rows [y_begin, y_end), each spread over
+  // the pixels in the filter's reach with weights f(dx) f(dy) normalised to
+  // integrate to one. Calls for disjoint row ranges may run concurrently;
+  // splats reach each pixel in list order, so sums do not depend on threads.
+  void add_splats(const SplatList& list, const ReconstructionFilter& filter, int y_begin, int y_end);
+  // Counts the list's dropped splats; call once per list.
+  void record_dropped(const SplatList& list);
+  // Light paths traced per pixel so far: the splat image is divided by it.
+  void set_splat_paths_per_pixel(uint64_t n) { splat_paths_per_pixel_ = n; }
+  bool has_splats() const { return !splat_sum_.empty(); }
+
+  // The weighted mean of each channel plus the splat image, pixel-interleaved.
   std::vector<float> resolve() const;
   // Per-pixel variance of the weighted mean of the beauty channels,
   // estimated from the samples as sum w^2 (x - mean)^2 / (sum w)^2 with the
-  // n / (n - 1) correction; pixel-interleaved, three per pixel.
+  // n / (n - 1) correction; pixel-interleaved, three per pixel. Splats are
+  // not part of it.
   std::vector<float> variance() const;
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
 
@@ -55,10 +73,13 @@ class FilmBuffer {
   std::vector<double> weight_sum_, weight2_sum_;
   std::vector<double> w2x_, w2x2_;  // sums of w^2 x and w^2 x^2, three per pixel
   std::vector<uint32_t> count_;
+  std::vector<double> splat_sum_;  // channels per pixel, allocated by the first splat
+  uint64_t splat_paths_per_pixel_ = 0;
   struct DropLog {
     std::atomic<uint64_t> count{0};
     std::mutex mutex;
     SampleId first{{-1, -1}, 0};
+    void record(SampleId id, uint64_t count);
   };
   std::unique_ptr<DropLog> dropped_ = std::make_unique<DropLog>();
 };

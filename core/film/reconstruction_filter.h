@@ -21,6 +21,8 @@ class ReconstructionFilter : public Plugin {
  public:
   float radius() const { return radius_; }
   virtual float eval(float x) const = 0;
+  // The integral of |f| over [-radius, radius], which normalises splats.
+  float integral() const { return cdf_.back(); }
   FilterSample sample(Vec2 u) const;
 
  protected:

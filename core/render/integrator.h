@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/film/splat_list.h"
 #include "core/geometry/ray.h"
 #include "core/registry/plugin.h"
 #include "core/sampling/sampler.h"
@@ -12,17 +13,23 @@ namespace caustica {
 
 class Scene;
 
-// An estimator of the pixel measurement. This family estimates each camera
-// sample on its own (path, direct, aov); integrators that splat light-path
-// contributions onto the film extend this interface when they arrive.
+// An estimator of the pixel measurement. Each camera sample writes its
+// estimate for its own pixel; integrators that trace light from the
+// emitters (ptracer, bdpt) also add splats for wherever their connections to
+// the camera land.
 class Integrator : public Plugin {
  public:
   // Work that precedes the pixels (e.g. a photon pass).
   virtual void prepare(const Scene&) {}
   // Names of the values sample() writes, in order; "R", "G", "B" for radiance.
   virtual std::vector<std::string> channels() const { return {"R", "G", "B"}; }
-  // Estimates the channels along one camera ray.
-  virtual void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out) const = 0;
+  // Whether sample() adds splats; the renderer then keeps a splat image.
+  virtual bool splats() const { return false; }
+  // Estimates the channels along one camera ray. Splats carry the same
+  // normalisation as `out`: the film divides their sum by the number of
+  // samples per pixel.
+  virtual void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out,
+                      SplatList& splats) const = 0;
   // Parameters as written back into the output's metadata.
   virtual std::string describe() const = 0;
 };

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "core/math/color.h"
-#include "core/registry/properties.h"
 #include "core/render/integrator.h"
 
 namespace caustica {
@@ -11,15 +10,12 @@ class RadianceIntegrator : public Integrator {
  public:
   virtual Color Li(const Scene& scene, Ray ray, Sampler& sampler) const = 0;
 
-  void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out) const final {
+  void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out, SplatList&) const final {
     const Color L = Li(scene, ray, sampler);
     out[0] = L.r;
     out[1] = L.g;
     out[2] = L.b;
   }
 };
-
-// Reads max_depth, which may be -1 (unlimited) or at least 0 (a black image).
-int64_t read_max_depth(const Properties& props);
 
 }  // namespace caustica

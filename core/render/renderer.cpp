@@ -40,42 +40,79 @@ struct CameraSample {
 
 // Everything one sample needs; `values` is scratch space of channel size.
 CameraSample run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed,
-                        std::span<float> values) {
+                        std::span<float> values, SplatList& splats) {
   sampler.start_sample(pixel, index, seed);
+  splats.set_source({pixel, index});
   const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
   const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
   const Ray ray = scene.sensor().generate_ray(raster, sampler.next_2d());
-  scene.integrator()->sample(scene, ray, sampler, values);
+  scene.integrator()->sample(scene, ray, sampler, values, splats);
   return {ray, fs.weight};
 }
 
-void render_pass(const Scene& scene, const std::vector<Tile>& tiles, uint32_t first, uint32_t count, uint64_t seed,
+struct ThreadState {
+  std::unique_ptr<Sampler> sampler;
+  std::vector<float> values, aov_values;
+  SplatList unused_splats;  // for integrators that make none
+};
+
+struct PassSettings {
+  uint32_t first, count;
+  uint64_t seed;
+};
+
+void render_tile(const Scene& scene, const Tile& tile, const PassSettings& pass, ThreadState& state, SplatList& splats,
                  FilmBuffer& film, FilmBuffer* aovs, RenderProgress* progress) {
-  struct ThreadState {
-    std::unique_ptr<Sampler> sampler;
-    std::vector<float> values, aov_values;
-  };
+  for (int y = tile.lo.y; y < tile.hi.y; ++y)
+    for (int x = tile.lo.x; x < tile.hi.x; ++x)
+      for (uint32_t i = pass.first; i < pass.first + pass.count; ++i) {
+        const CameraSample cs = run_sample(scene, *state.sampler, {x, y}, i, pass.seed, state.values, splats);
+        film.add_sample({{x, y}, i}, state.values, cs.weight);
+        if (aovs && i < kAovSamples) {
+          standard_aovs().evaluate(scene, cs.ray, state.aov_values);
+          aovs->add_sample({{x, y}, i}, state.aov_values, cs.weight);
+        }
+      }
+  if (progress) progress->pixel_samples += uint64_t(pass.count) * (tile.hi.x - tile.lo.x) * (tile.hi.y - tile.lo.y);
+}
+
+// Splatting integrators render the tiles in chunks: each tile collects its
+// splats in its own list, then the lists enter the film in tile order, in
+// parallel over bands of rows. Every pixel thus receives its splats in the
+// same order for any thread count, and memory stays bounded by the chunk.
+void render_pass(const Scene& scene, const std::vector<Tile>& tiles, const PassSettings& pass, int threads,
+                 FilmBuffer& film, FilmBuffer* aovs, RenderProgress* progress) {
   tbb::enumerable_thread_specific<ThreadState> states([&] {
-    return ThreadState{scene.sensor().sampler()->clone(), std::vector<float>(film.channel_count()),
-                       std::vector<float>(aovs ? aovs->channel_count() : 0)};
+    return ThreadState{scene.sensor().sampler()->clone(),
+                       std::vector<float>(film.channel_count()),
+                       std::vector<float>(aovs ? aovs->channel_count() : 0),
+                       {}};
   });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
-    ThreadState& state = states.local();
-    for (size_t t = range.begin(); t != range.end(); ++t) {
-      for (int y = tiles[t].lo.y; y < tiles[t].hi.y; ++y)
-        for (int x = tiles[t].lo.x; x < tiles[t].hi.x; ++x)
-          for (uint32_t i = first; i < first + count; ++i) {
-            const CameraSample cs = run_sample(scene, *state.sampler, {x, y}, i, seed, state.values);
-            film.add_sample({{x, y}, i}, state.values, cs.weight);
-            if (aovs && i < kAovSamples) {
-              standard_aovs().evaluate(scene, cs.ray, state.aov_values);
-              aovs->add_sample({{x, y}, i}, state.aov_values, cs.weight);
-            }
-          }
-      if (progress)
-        progress->pixel_samples += uint64_t(count) * (tiles[t].hi.x - tiles[t].lo.x) * (tiles[t].hi.y - tiles[t].lo.y);
-    }
-  });
+  if (!scene.integrator()->splats()) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+      ThreadState& state = states.local();
+      for (size_t t = range.begin(); t != range.end(); ++t)
+        render_tile(scene, tiles[t], pass, state, state.unused_splats, film, aovs, progress);
+    });
+    return;
+  }
+  const size_t chunk = std::max<size_t>(8, 4 * size_t(threads));
+  std::vector<SplatList> lists(std::min(chunk, tiles.size()));
+  const ReconstructionFilter& filter = scene.sensor().film()->filter();
+  for (size_t begin = 0; begin < tiles.size(); begin += chunk) {
+    const size_t end = std::min(begin + chunk, tiles.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1), [&](const tbb::blocked_range<size_t>& range) {
+      ThreadState& state = states.local();
+      for (size_t t = range.begin(); t != range.end(); ++t) {
+        lists[t - begin].clear();
+        render_tile(scene, tiles[t], pass, state, lists[t - begin], film, aovs, progress);
+      }
+    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, film.height(), kTileSize), [&](const tbb::blocked_range<int>& rows) {
+      for (size_t i = 0; i < end - begin; ++i) film.add_splats(lists[i], filter, rows.begin(), rows.end());
+    });
+    for (size_t i = 0; i < end - begin; ++i) film.record_dropped(lists[i]);
+  }
 }
 
 }  // namespace
@@ -95,6 +132,7 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
 
   if (progress) progress->pixel_samples_target = uint64_t(target) * film.width() * film.height();
   scene.integrator()->prepare(scene);
+  if (scene.integrator()->splats()) film.enable_splats();
   uint32_t done = 0;
   double last_pass = 0;
   // Small passes at first so progress and time budgets react quickly.
@@ -107,8 +145,9 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
                : done < target && (!stopped() || done == 0)) {
     const uint32_t count = timed ? pass : std::min(pass, target - done);
     const double pass_start = elapsed();
-    arena.execute([&] { render_pass(scene, tiles, done, count, options.seed, film, aovs, progress); });
+    arena.execute([&] { render_pass(scene, tiles, {done, count, options.seed}, threads, film, aovs, progress); });
     done += count;
+    film.set_splat_paths_per_pixel(done);
     last_pass = elapsed() - pass_start;
     last_count = count;
     pass = std::min<uint32_t>(pass * 2, 16);
@@ -126,11 +165,11 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   return stats;
 }
 
-std::vector<float> replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed) {
+ReplayedSample replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed) {
   auto sampler = scene.sensor().sampler()->clone();
-  std::vector<float> values(scene.integrator()->channels().size());
-  run_sample(scene, *sampler, pixel, index, seed, values);
-  return values;
+  ReplayedSample out{std::vector<float>(scene.integrator()->channels().size()), {}};
+  run_sample(scene, *sampler, pixel, index, seed, out.values, out.splats);
+  return out;
 }
 
 }  // namespace caustica

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/film/film_buffer.h"
+#include "core/film/splat_list.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -53,8 +54,14 @@ struct RenderStats {
 RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer& film, FilmBuffer* aovs = nullptr,
                    RenderProgress* progress = nullptr);
 
-// Runs one sample alone and returns the channel values before they reach
-// the film: a sample replayed under a debugger takes exactly this path.
-std::vector<float> replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed);
+// One sample's output before it reaches the film.
+struct ReplayedSample {
+  std::vector<float> values;
+  SplatList splats;
+};
+
+// Runs one sample alone: a sample replayed under a debugger takes exactly
+// the path it took in the render.
+ReplayedSample replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed);
 
 }  // namespace caustica

@@ -27,7 +27,7 @@ TEST(Determinism, ReplayedSampleIsTheOneInTheImage) {
   const auto scene = load_scene(kScene, {{"res", "16"}});
   const auto img = test::render_scene(*scene, 1, 5).resolve();
   for (Vec2i p : {Vec2i{3, 4}, Vec2i{15, 0}, Vec2i{8, 12}}) {
-    const auto v = replay_sample(*scene, p, 0, 5);
+    const auto v = replay_sample(*scene, p, 0, 5).values;
     for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(v[c], img[(p.y * 16 + p.x) * 3 + c]);
   }
 }

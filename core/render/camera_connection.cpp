@@ -1,0 +1,28 @@
+#include "core/render/camera_connection.h"
+
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<const PathVertex> light, int s,
+                                                  Vec2 u_lens) {
+  const PathVertex& v = light[s - 1];
+  if (v.environment || v.delta_light) return std::nullopt;
+  const auto ws = scene.sensor().sample_Wi({v.p(), v.si.p_error, v.si.ng}, u_lens);
+  if (!ws || !(ws->pdf > 0)) return std::nullopt;
+  Color f;
+  if (v.kind == PathVertex::Kind::Light) {
+    f = v.emitter->L(v.si, ws->wi) * abs_dot(v.si.ng, ws->wi);
+  } else {
+    if (!(v.bsdf->lobes() & ~kDelta)) return std::nullopt;
+    f = v.bsdf->eval(direction_to(v, light[s - 2]), ws->wi) * abs_dot(ws->wi, v.si.shading.n);
+  }
+  if (f.is_black()) return std::nullopt;
+  if (scene.occluded(v.si.spawn_to(ws->p_lens, {}, {}))) return std::nullopt;
+  CameraConnection c{ws->raster, v.beta * f * ws->We / ws->pdf, {}};
+  c.camera.kind = PathVertex::Kind::Camera;
+  c.camera.si.p = ws->p_lens;
+  return c;
+}
+
+}  // namespace caustica

@@ -1,0 +1,58 @@
+#include "core/render/path_density.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pdf) {
+  if (to.environment) return pdf;
+  const Vec3 d = to.p() - from.p();
+  const float dist2 = squared_length(d);
+  if (dist2 == 0) return 0;
+  const float cos = to.has_normal() ? abs_dot(to.si.ng, d) / std::sqrt(dist2) : 1;
+  return pdf * cos / dist2;
+}
+
+float emission_density(const PathVertex& light, const PathVertex& next) {
+  float pdf_pos = 0, pdf_dir = 0;
+  if (light.environment) {
+    // Environment rays start on a disk facing their direction, so the
+    // density of the point they reach is the disk's, projected.
+    light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
+    return next.has_normal() ? pdf_pos * abs_dot(next.si.ng, light.w_env) : pdf_pos;
+  }
+  light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity}, light.si.ng, &pdf_pos, &pdf_dir);
+  return solid_angle_to_area(light, next, pdf_dir);
+}
+
+float light_origin_density(const Scene& scene, const PathVertex& v) {
+  const float pmf = scene.light_selection().pmf(v.emitter);
+  float pdf_pos = 0, pdf_dir = 0;
+  if (v.environment) {
+    v.emitter->pdf_Le({{}, -v.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
+    return pmf * pdf_dir;
+  }
+  v.emitter->pdf_Le({v.p(), v.si.ng, kInfinity}, v.si.ng, &pdf_pos, &pdf_dir);
+  return pmf * pdf_pos;
+}
+
+float scatter_density(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
+  switch (cur.kind) {
+    case PathVertex::Kind::Camera: {
+      float pdf_pos = 0, pdf_dir = 0;
+      scene.sensor().pdf_We({cur.p(), direction_to(cur, next), kInfinity}, &pdf_pos, &pdf_dir);
+      return solid_angle_to_area(cur, next, pdf_dir);
+    }
+    case PathVertex::Kind::Light:
+      return emission_density(cur, next);
+    case PathVertex::Kind::Surface:
+      break;
+  }
+  if (!prev) throw std::logic_error("a surface vertex cannot start a subpath");
+  return solid_angle_to_area(cur, next, cur.bsdf->pdf(direction_to(cur, *prev), direction_to(cur, next)));
+}
+
+}  // namespace caustica

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/registry/param_spec.h"
+
+namespace caustica {
+
+class Properties;
+
+// The path-length parameters that path, ptracer and bdpt share, read and
+// checked in one place so the same values mean the same paths in each.
+//   max_depth        longest path in segments from the camera; -1 for no limit,
+//                    0 renders black, 1 shows emitters only, 2 direct light only
+//   rr_depth         path vertices before Russian roulette may end a path
+//   rr_max_survival  upper bound on the survival probability
+//   hide_emitters    emitters seen directly by the camera appear black
+struct PathSettings {
+  int64_t max_depth = -1;
+  int64_t rr_depth = 5;
+  float rr_max_survival = 0.95f;
+  bool hide_emitters = false;
+};
+
+PathSettings read_path_settings(const Properties& props);
+
+// The declarations of those parameters, followed by `more`.
+std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more = {});
+
+// "NAME max_depth=... rr_depth=... rr_max_survival=... hide_emitters=...", for metadata.
+std::string describe(const std::string& integrator, const PathSettings& settings);
+
+}  // namespace caustica

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <optional>
+
+#include "core/bsdf/surface_bsdf.h"
+#include "core/geometry/interaction.h"
+#include "core/math/color.h"
+
+namespace caustica {
+
+class Emitter;
+
+// A vertex of a camera or light subpath, as the bidirectional estimators
+// keep them. Densities are per unit area, except at an environment vertex
+// (a direction, not a point), where they are per unit solid angle.
+struct PathVertex {
+  enum class Kind : uint8_t { Camera, Light, Surface };
+  Kind kind = Kind::Surface;
+  // Position and frames. The camera and point lights have no normal (ng is
+  // zero); an environment vertex has no position at all.
+  SurfaceInteraction si;
+  // For light vertices the emitter; for surface vertices the emitter of the
+  // shape that was hit, if it emits.
+  const Emitter* emitter = nullptr;
+  bool environment = false;
+  Vec3 w_env;                // environment vertices: unit direction from the scene toward the environment
+  bool delta = false;        // the subpath left this vertex through a delta lobe
+  bool delta_light = false;  // a light vertex at a delta position (point light): no ray can hit it
+  Color beta;                // the subpath's throughput up to this vertex
+  float pdf_fwd = 0;         // density of this vertex as its own subpath sampled it
+  float pdf_rev = 0;         // density of this vertex as the other subpath would sample it
+  std::optional<SurfaceBsdf> bsdf;
+
+  Vec3 p() const { return si.p; }
+  bool has_normal() const { return si.ng != Vec3(); }
+  bool is_surface() const { return kind == Kind::Surface; }
+};
+
+// Unit direction from vertex a toward vertex b.
+inline Vec3 direction_to(const PathVertex& a, const PathVertex& b) {
+  if (b.environment) return b.w_env;
+  if (a.environment) return -a.w_env;
+  return normalize(b.p() - a.p());
+}
+
+}  // namespace caustica

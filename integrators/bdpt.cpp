@@ -1,0 +1,198 @@
+// bdpt: bidirectional path tracing (Veach 1997, chapter 10). Each sample
+// traces a camera subpath and a light subpath and joins every prefix of one
+// to every prefix of the other: s light vertices and t camera vertices make
+// strategy (s, t). s = 0 is the camera subpath reaching an emitter by
+// itself, s = 1 samples a point on an emitter (next-event estimation), t = 1
+// joins a light vertex to the lens and splats where it lands. Every path is
+// weighed by multiple importance sampling against all the strategies that
+// could have made it, so the estimate stays unbiased while each kind of
+// light goes to the strategy that finds it best.
+//
+// Parameters (path length as in core/render/path_settings.h)
+//   max_depth         integer  -1       longest path in segments
+//   rr_depth          integer  5        subpath vertices before Russian roulette
+//   rr_max_survival   float    0.95     upper bound on the survival probability
+//   hide_emitters     boolean  false    emitters seen directly appear black
+//   mis               string   power    heuristic: power (exponent 2) or balance
+//   strategy_layers   integer  0        for paths of up to this many segments, also
+//                                       write each strategy's weighted contribution
+//                                       as the layer sS tT.{R,G,B}; they sum to the beauty
+//
+//   <integrator type="bdpt"><integer name="strategy_layers" value="4"/></integrator>
+
+#include <span>
+#include <vector>
+
+#include "core/registry/properties.h"
+#include "core/render/camera_connection.h"
+#include "core/render/integrator.h"
+#include "core/render/path_density.h"
+#include "core/render/path_settings.h"
+#include "core/render/strategy_weight.h"
+#include "core/render/subpath.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+namespace {
+
+MisHeuristic read_heuristic(const Properties& props) {
+  const std::string name = props.get_string("mis");
+  if (name == "power") return MisHeuristic::Power;
+  if (name == "balance") return MisHeuristic::Balance;
+  throw props.error("mis", "must be power or balance, not '" + name + "'");
+}
+
+// First channel of strategy (s, t) among the layers: paths of k = s + t - 1
+// segments have k + 1 strategies, listed by k, then s.
+uint32_t layer_channel(int s, int t) {
+  const int k = s + t - 1;
+  return uint32_t(3 + 3 * ((k - 1) * (k + 2) / 2 + s));
+}
+
+class BidirectionalPathTracer final : public Integrator {
+ public:
+  explicit BidirectionalPathTracer(const Properties& props)
+      : settings_(read_path_settings(props)),
+        camera_limits_(camera_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)),
+        light_limits_(light_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)),
+        heuristic_(read_heuristic(props)),
+        layers_(int(props.get_int("strategy_layers"))) {
+    if (layers_ < 0 || layers_ > 12) throw props.error("strategy_layers", "must be between 0 and 12");
+  }
+
+  bool splats() const override { return true; }
+
+  std::vector<std::string> channels() const override {
+    std::vector<std::string> names{"R", "G", "B"};
+    for (int k = 1; k <= layers_; ++k)
+      for (int s = 0; s <= k; ++s) {
+        const std::string s_text = std::to_string(s), t_text = std::to_string(k + 1 - s);
+        for (const char* c : {"R", "G", "B"})
+          names.push_back(std::string("s").append(s_text).append("t").append(t_text).append(".").append(c));
+      }
+    return names;
+  }
+
+  void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out,
+              SplatList& splats) const override {
+    std::fill(out.begin(), out.end(), 0.0f);
+    thread_local std::vector<PathVertex> camera, light;
+    trace_camera_subpath(scene, ray, sampler, camera_limits_, camera);
+    compute_densities(scene, camera);
+    trace_light_subpath(scene, sampler, light_limits_, light);
+    compute_densities(scene, light);
+
+    for (int t = 1; t <= int(camera.size()); ++t)
+      for (int s = 0; s <= int(light.size()); ++s) {
+        const int k = s + t - 1;
+        if (k < 1 || (settings_.max_depth >= 0 && k > settings_.max_depth)) continue;
+        if (k == 1 && settings_.hide_emitters) continue;
+        const bool layer = k <= layers_;
+        if (t == 1) {
+          const auto c = connect_to_camera(scene, light, s, sampler.next_2d());
+          if (!c) continue;
+          const Color value =
+              c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_);
+          splats.add(c->raster, value);
+          if (layer) splats.add(c->raster, value, layer_channel(s, t));
+        } else {
+          const Color value = connect(scene, light, s, camera, t, sampler);
+          add(out, 0, value);
+          if (layer) add(out, layer_channel(s, t), value);
+        }
+      }
+  }
+
+  std::string describe() const override {
+    return caustica::describe("bdpt", settings_) + (heuristic_ == MisHeuristic::Power ? " mis=power" : " mis=balance") +
+           " strategy_layers=" + std::to_string(layers_);
+  }
+
+ private:
+  static void add(std::span<float> out, uint32_t channel, Color c) {
+    out[channel] += c.r;
+    out[channel + 1] += c.g;
+    out[channel + 2] += c.b;
+  }
+
+  // The weighted contribution of strategy (s, t) for t >= 2.
+  Color connect(const Scene& scene, std::span<const PathVertex> light, int s, std::vector<PathVertex>& camera, int t,
+                Sampler& sampler) const {
+    PathVertex& cv = camera[t - 1];
+    const std::span<const PathVertex> camera_part = std::span(camera).first(t);
+    if (s == 0) return emitted(scene, camera, t);
+    if (cv.environment || !(cv.bsdf->lobes() & ~kDelta)) return {};
+    const Vec3 wo = direction_to(cv, camera[t - 2]);
+    if (s == 1) {
+      float u_select = sampler.next_1d();
+      const Vec2 u = sampler.next_2d();
+      const auto choice = scene.light_selection().sample(u_select);
+      if (!choice) return {};
+      const auto ls = choice->emitter->sample_Li({cv.p(), cv.si.p_error, cv.si.ng}, u);
+      if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) return {};
+      const Color f = cv.bsdf->eval(wo, ls->wi) * abs_dot(ls->wi, cv.si.shading.n);
+      if (f.is_black()) return {};
+      const Ray shadow = ls->is_infinite ? cv.si.spawn(ls->wi) : cv.si.spawn_to(ls->p, ls->p_error, ls->n);
+      if (scene.occluded(shadow)) return {};
+      PathVertex lv;
+      lv.kind = PathVertex::Kind::Light;
+      lv.emitter = choice->emitter;
+      lv.environment = ls->is_infinite;
+      lv.w_env = ls->wi;
+      lv.si.p = ls->p;
+      lv.si.p_error = ls->p_error;
+      lv.si.ng = ls->n;
+      lv.delta_light = ls->is_delta;
+      lv.pdf_fwd = light_origin_density(scene, lv);
+      const float w = strategy_weight(scene, {&lv, 1}, camera_part, 1, t, heuristic_);
+      return cv.beta * f * ls->Li * (w / (choice->pmf * ls->pdf));
+    }
+    const PathVertex& lv = light[s - 1];
+    if (!(lv.bsdf->lobes() & ~kDelta)) return {};
+    const Vec3 d = lv.p() - cv.p();
+    const float dist2 = squared_length(d);
+    if (dist2 == 0) return {};
+    const Vec3 wi = d / std::sqrt(dist2);
+    const Color f = cv.bsdf->eval(wo, wi) * lv.bsdf->eval(direction_to(lv, light[s - 2]), -wi) *
+                    (abs_dot(wi, cv.si.shading.n) * abs_dot(wi, lv.si.shading.n) / dist2);
+    if (f.is_black()) return {};
+    if (scene.occluded(cv.si.spawn_to(lv.p(), lv.si.p_error, lv.si.ng))) return {};
+    return cv.beta * f * lv.beta * strategy_weight(scene, light.first(s), camera_part, s, t, heuristic_);
+  }
+
+  // Strategy (0, t): the camera subpath's last vertex is on an emitter.
+  Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t) const {
+    PathVertex& cv = camera[t - 1];
+    const std::span<const PathVertex> camera_part = std::span(camera).first(t);
+    if (!cv.environment) {
+      if (!cv.emitter) return {};
+      const Color Le = cv.emitter->L(cv.si, direction_to(cv, camera[t - 2]));
+      if (Le.is_black()) return {};
+      return cv.beta * Le * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
+    }
+    // Each environment emitter is a light of its own, weighed on its own.
+    Color sum;
+    for (const Emitter* env : scene.infinite_emitters()) {
+      const Color Le = env->Le_infinite(cv.w_env);
+      if (Le.is_black()) continue;
+      cv.emitter = env;
+      sum += cv.beta * Le * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
+    }
+    return sum;
+  }
+
+  PathSettings settings_;
+  SubpathLimits camera_limits_, light_limits_;
+  MisHeuristic heuristic_;
+  int layers_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(BidirectionalPathTracer, "integrator", "bdpt",
+                         path_settings_params({{"mis", ParamType::String, "power", "power or balance heuristic"},
+                                               {"strategy_layers", ParamType::Integer, "0",
+                                                "write each strategy's contribution for paths up to this length"}}),
+                         {});
+
+}  // namespace caustica

@@ -1,0 +1,56 @@
+// ptracer: light tracing (particle tracing). Each sample traces one path
+// from an emitter (chosen by power) with importance-mode BSDFs and joins
+// every vertex to the camera, splatting the contribution where it lands;
+// the camera ray of the sample is not used. It renders caustics seen
+// directly well, but nothing seen through a delta surface (a mirror or
+// smooth glass between the camera and the first diffuse or glossy surface):
+// such paths cannot be joined to a pinhole.
+//
+// Parameters (core/render/path_settings.h)
+//   max_depth         integer  -1     longest path in segments, counted from the camera
+//   rr_depth          integer  5      vertices after the emitter before Russian roulette
+//   rr_max_survival   float    0.95   upper bound on the survival probability
+//   hide_emitters     boolean  false  emitters seen directly appear black
+//
+//   <integrator type="ptracer"><integer name="max_depth" value="8"/></integrator>
+
+#include <vector>
+
+#include "core/registry/properties.h"
+#include "core/render/camera_connection.h"
+#include "core/render/integrator.h"
+#include "core/render/path_settings.h"
+#include "core/render/subpath.h"
+
+namespace caustica {
+namespace {
+
+class ParticleTracer final : public Integrator {
+ public:
+  explicit ParticleTracer(const Properties& props)
+      : settings_(read_path_settings(props)),
+        limits_(light_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)) {}
+
+  bool splats() const override { return true; }
+
+  void sample(const Scene& scene, const Ray&, Sampler& sampler, std::span<float> out,
+              SplatList& splats) const override {
+    std::fill(out.begin(), out.end(), 0.0f);
+    thread_local std::vector<PathVertex> light;
+    trace_light_subpath(scene, sampler, limits_, light);
+    for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
+      if (const auto c = connect_to_camera(scene, light, s, sampler.next_2d())) splats.add(c->raster, c->value);
+  }
+
+  std::string describe() const override { return caustica::describe("ptracer", settings_); }
+
+ private:
+  PathSettings settings_;
+  SubpathLimits limits_;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(ParticleTracer, "integrator", "ptracer", path_settings_params(), {});
+
+}  // namespace caustica
