@@ -4,13 +4,17 @@
 //
 // Each case is a z-test of the image mean against that value, with the
 // standard error estimated from the per-pixel sample variances, at
-// significance 0.1% each (two-sided). Seeds are fixed, so the outcome is
-// deterministic.
+// significance 0.1% each (two-sided). Light tracing and BDPT splat, so their
+// standard error comes from independent runs instead, and the critical value
+// from Student's t, Sidak-corrected over their cases at 0.1%. Seeds are
+// fixed, so the outcome is deterministic.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "tests/support/chi2.h"
+#include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
 
@@ -91,6 +95,34 @@ TEST(ClosedSphere, HighAlbedoStaysUnbiased) {
   const auto scene = test::scene_from_xml(sphere_scene("<integrator type='path'/>", 0.5f, 0.9f));
   const MeanEstimate m = image_mean(test::render_scene(*scene, 64, 6));
   EXPECT_LT(std::abs(m.mean - 5.0) / m.standard_error, kZCritical) << m.mean << " +- " << m.standard_error;
+}
+
+TEST(ClosedSphere, LightTracingAndBidirectionalAreUnbiased) {
+  struct Case {
+    const char* integrator;
+    double expected;
+    uint32_t spp;  // a light path per sample makes ptracer's estimate noisier
+  };
+  const double truncated = 1 + 0.5 + 0.25;  // max_depth 3
+  const Case cases[] = {
+      {"<integrator type='ptracer'/>", 2.0, 32},
+      {"<integrator type='ptracer'><integer name='rr_depth' value='1'/></integrator>", 2.0, 32},
+      {"<integrator type='ptracer'><integer name='max_depth' value='3'/></integrator>", truncated, 32},
+      {"<integrator type='bdpt'/>", 2.0, 4},
+      {"<integrator type='bdpt'><integer name='rr_depth' value='1'/></integrator>", 2.0, 4},
+      {"<integrator type='bdpt'><string name='mis' value='balance'/></integrator>", 2.0, 4},
+      {"<integrator type='bdpt'><integer name='max_depth' value='3'/></integrator>", truncated, 4},
+  };
+  constexpr int kRuns = 12;
+  const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(cases))), kRuns - 1);
+  uint64_t seed = 100;
+  for (const Case& c : cases) {
+    const auto scene = test::scene_from_xml(sphere_scene(c.integrator, 1.0f, 0.5f));
+    const auto region = test::estimate_regions(*scene, {{{0, 0}, {24, 24}}}, c.spp, kRuns, seed += kRuns)[0];
+    const double score = test::difference_score(region, {c.expected, 0, 0});
+    EXPECT_LT(std::abs(score), t_critical)
+        << c.integrator << ": mean " << region.mean << " +- " << region.standard_error << ", expected " << c.expected;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,50 @@
+#include "tests/support/independent_runs.h"
+
+#include <cmath>
+
+#include "tests/support/test_scenes.h"
+
+namespace caustica::test {
+
+std::vector<Region> grid_regions(int width, int height, int n) {
+  std::vector<Region> regions;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      regions.push_back({{i * width / n, j * height / n}, {(i + 1) * width / n, (j + 1) * height / n}});
+  return regions;
+}
+
+std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vector<Region>& regions, uint32_t spp,
+                                             int runs, uint64_t first_seed) {
+  const int width = scene.sensor().film()->width();
+  std::vector<double> sum(regions.size(), 0), sum2(regions.size(), 0);
+  for (int r = 0; r < runs; ++r) {
+    const auto img = render_scene(scene, spp, first_seed + r).resolve();
+    const size_t nc = img.size() / (size_t(width) * scene.sensor().film()->height());
+    for (size_t i = 0; i < regions.size(); ++i) {
+      double mean = 0;
+      const Region& g = regions[i];
+      for (int y = g.lo.y; y < g.hi.y; ++y)
+        for (int x = g.lo.x; x < g.hi.x; ++x)
+          for (int c = 0; c < 3; ++c) mean += img[(size_t(y) * width + x) * nc + c];
+      mean /= 3.0 * (g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
+      sum[i] += mean;
+      sum2[i] += mean * mean;
+    }
+  }
+  std::vector<RegionEstimate> out(regions.size());
+  for (size_t i = 0; i < regions.size(); ++i) {
+    const double mean = sum[i] / runs;
+    const double variance = std::max(0.0, (sum2[i] - runs * mean * mean) / (runs - 1));
+    out[i] = {mean, std::sqrt(variance / runs), runs};
+  }
+  return out;
+}
+
+double difference_score(const RegionEstimate& a, const RegionEstimate& b) {
+  const double rounding = 1e-5 * (std::abs(a.mean) + std::abs(b.mean));
+  const double se2 = a.standard_error * a.standard_error + b.standard_error * b.standard_error + rounding * rounding;
+  return se2 > 0 ? (a.mean - b.mean) / std::sqrt(se2) : 0;
+}
+
+}  // namespace caustica::test
