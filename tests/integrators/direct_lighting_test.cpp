@@ -5,7 +5,9 @@
 // light of intensity I: L = rho I h / (pi d^3), with no noise at all.
 //
 // Each point is a z-test at significance 0.1%, Sidak-corrected over the
-// points and integrators tested; seeds are fixed.
+// points and integrators tested; seeds are fixed. Light tracing and BDPT
+// are tested on an image of the plane instead, region by region against the
+// formula integrated over each pixel, with errors from independent runs.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +16,7 @@
 
 #include "core/registry/properties.h"
 #include "tests/support/chi2.h"
+#include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
 
@@ -80,6 +83,57 @@ TEST(DirectLighting, SphereLightOnPlane) {
 
 // A tiny light far away (a sun-like cone of 1e-8 sr) keeps its precision:
 // the cone is sampled from its versine, never from a rounded cosine.
+// Radiance of the lit plane averaged over pixel (x, y), by the midpoint rule
+// on an 8 x 8 grid of camera rays.
+double pixel_expectation(const Scene& scene, int x, int y) {
+  constexpr int n = 8;
+  double sum = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Ray ray = scene.sensor().generate_ray({x + (i + 0.5f) / n, y + (j + 0.5f) / n}, {0.5f, 0.5f});
+      const float t = -ray.o.z / ray.d.z;
+      const Vec3 p = ray.o + ray.d * t;
+      const double d = std::sqrt(p.x * p.x + p.y * p.y + kHeight * kHeight);
+      sum += kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
+    }
+  return sum / (n * n);
+}
+
+TEST(DirectLighting, SphereLightOnPlaneSeenByLightPaths) {
+  const std::string camera =
+      "<sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
+      "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform>"
+      "<film type='hdrfilm'><integer name='width' value='24'/><integer name='height' value='24'/>"
+      "<rfilter type='box'/></film></sensor>";
+  // max_depth 2: the formula leaves out light the plane sends back to the
+  // light's own (diffuse) surface.
+  const std::pair<const char*, uint32_t> integrators[] = {
+      {"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 256},
+      {"<integrator type='bdpt'><integer name='max_depth' value='2'/></integrator>", 64},
+      {"<integrator type='bdpt'><integer name='max_depth' value='2'/><string name='mis' value='balance'/>"
+       "</integrator>",
+       64}};
+  const auto regions = test::grid_regions(24, 24, 4);
+  constexpr int kRuns = 10;
+  const double t_critical =
+      test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(integrators) * regions.size())), kRuns - 1);
+  uint64_t seed = 0;
+  for (const auto& [integrator, spp] : integrators) {
+    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, sphere_light()));
+    const auto estimates = test::estimate_regions(*scene, regions, spp, kRuns, seed += kRuns);
+    for (size_t i = 0; i < regions.size(); ++i) {
+      double expected = 0;
+      const test::Region& g = regions[i];
+      for (int y = g.lo.y; y < g.hi.y; ++y)
+        for (int x = g.lo.x; x < g.hi.x; ++x) expected += pixel_expectation(*scene, x, y);
+      expected /= (g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
+      const double score = test::difference_score(estimates[i], {expected, 0, 0});
+      EXPECT_LT(std::abs(score), t_critical) << integrator << " region " << i << ": " << estimates[i].mean << " +- "
+                                             << estimates[i].standard_error << ", expected " << expected;
+    }
+  }
+}
+
 TEST(DirectLighting, TinyFarSphereLight) {
   const float radius = 0.01f, height = 100, Le = 1e8f;
   const auto scene = test::scene_from_xml(
