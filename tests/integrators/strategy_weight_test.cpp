@@ -1,0 +1,166 @@
+// Multiple importance sampling between bidirectional strategies is unbiased
+// only if, for every path, the weights of the strategies that could have
+// sampled it sum to one. Here paths are made by joining sampled camera and
+// light subpaths as bdpt does; each path is then cut at every other vertex,
+// each part's densities recomputed from scratch as its own subpath sampler
+// would see them, and the weights of all possible strategies summed. The
+// weight bdpt computes for the strategy that made the path (with the
+// densities the connection overrides) must also equal the recomputed one.
+// Both are checked to single-precision accuracy; the scenes cover area,
+// point and environment lights and diffuse, glossy and delta surfaces.
+
+#include "core/render/strategy_weight.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/registry/properties.h"
+#include "core/render/path_density.h"
+#include "core/render/subpath.h"
+#include "core/scene/scene_loader.h"
+#include "tests/support/test_scenes.h"
+
+namespace caustica {
+namespace {
+
+const char* const kMixedScene =
+    "<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='60'/>"
+    "<transform name='to_world'><lookat origin='0, -3, 2' target='0, 0, 0.3' up='0, 0, 1'/></transform>"
+    "<film type='hdrfilm'><integer name='width' value='32'/><integer name='height' value='32'/></film></sensor>"
+    "<shape type='rectangle'><transform name='to_world'><scale value='4'/></transform>"
+    "<bsdf type='diffuse'/></shape>"
+    "<shape type='sphere'><point name='center' x='-0.6' y='0' z='0.5'/><float name='radius' value='0.5'/>"
+    "<bsdf type='conductor'/></shape>"
+    "<shape type='sphere'><point name='center' x='0.6' y='0' z='0.5'/><float name='radius' value='0.5'/>"
+    "<bsdf type='roughconductor'><float name='alpha' value='0.2'/></bsdf></shape>"
+    "<shape type='sphere'><point name='center' x='0' y='0.8' z='0.3'/><float name='radius' value='0.3'/>"
+    "<bsdf type='dielectric'/></shape>"
+    "<shape type='sphere'><point name='center' x='0.5' y='-0.5' z='2'/><float name='radius' value='0.2'/>"
+    "<emitter type='area'><rgb name='radiance' value='10'/></emitter></shape>"
+    "<emitter type='point'><point name='position' x='-1' y='-1' z='2'/><rgb name='intensity' value='5'/></emitter>"
+    "<emitter type='constant'><rgb name='radiance' value='0.2'/></emitter></scene>";
+
+std::unique_ptr<Sampler> make_sampler() {
+  const PluginInfo* info = Registry::instance().find("sampler", "independent");
+  return std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"test", 1})))->clone();
+}
+
+// The vertices x_0 (light) .. x_k (camera) of the path strategy (s, t) makes.
+std::vector<PathVertex> join(const std::vector<PathVertex>& light, const std::vector<PathVertex>& camera, int s,
+                             int t) {
+  std::vector<PathVertex> path(light.begin(), light.begin() + s);
+  for (int j = t - 1; j >= 0; --j) path.push_back(camera[j]);
+  // The connection's endpoints scatter through the connection.
+  if (s >= 1) path[s - 1].delta = false;
+  path[s].delta = false;
+  return path;
+}
+
+// Whether the path has a nonzero contribution: each connection or emission
+// it relies on sends light. Only such paths need weights that sum to one.
+bool carries_light(const Scene& scene, const std::vector<PathVertex>& x, int s) {
+  const int k = int(x.size()) - 1;
+  if (s == 0) {
+    if (x[0].environment) return true;
+    return x[0].emitter && !x[0].emitter->L(x[0].si, direction_to(x[0], x[1])).is_black();
+  }
+  if (x[s].kind == PathVertex::Kind::Camera) {
+    Vec2 raster;
+    if (scene.sensor().We({x[k].p(), direction_to(x[k], x[s - 1]), kInfinity}, &raster).is_black()) return false;
+  } else if (x[s].environment ||
+             x[s].bsdf->eval(direction_to(x[s], x[s + 1]), direction_to(x[s], x[s - 1])).is_black()) {
+    return false;
+  }
+  if (s == 1) {
+    if (x[0].environment || x[0].delta_light) return true;
+    return !x[0].emitter->L(x[0].si, direction_to(x[0], x[1])).is_black();
+  }
+  if (x[s - 1].bsdf->eval(direction_to(x[s - 1], x[s - 2]), direction_to(x[s - 1], x[s])).is_black()) return false;
+  return !scene.occluded(x[s - 1].si.spawn_to(x[s].p(), x[s].si.p_error, x[s].si.ng));
+}
+
+// Strategy s' as its own samplers would have made the path: the light
+// subpath x_0 .. x_{s'-1} and the camera subpath x_k .. x_{s'}, with their
+// densities computed afresh.
+float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, int sp, MisHeuristic h) {
+  const int k = int(x.size()) - 1;
+  std::vector<PathVertex> light(x.begin(), x.begin() + sp), camera(x.rbegin(), x.rend() - sp);
+  if (sp >= 1) light[0].kind = PathVertex::Kind::Light;
+  if (sp == 0 && !x[0].environment) camera.back().kind = PathVertex::Kind::Surface;
+  compute_densities(scene, light);
+  compute_densities(scene, camera);
+  return strategy_weight(scene, light, camera, sp, k + 1 - sp, h);
+}
+
+bool possible(const std::vector<PathVertex>& x, int sp) {
+  const int k = int(x.size()) - 1;
+  if (sp == 0) return !x[0].delta_light;
+  if (sp == k && k == 1) return !x[0].environment && !x[0].delta_light;
+  return (sp == 1 || !x[sp - 1].delta) && (sp == k || !x[sp].delta);
+}
+
+// How many paths of each kind were checked.
+struct Tally {
+  int paths = 0, environment = 0, point_light = 0, through_delta = 0;
+};
+
+void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
+  auto sampler = make_sampler();
+  const SubpathLimits camera_limits = camera_subpath_limits(8, 5, 0.95f);
+  const SubpathLimits light_limits = light_subpath_limits(8, 5, 0.95f);
+  const Film& film = *scene.sensor().film();
+  std::vector<PathVertex> camera, light;
+  for (int i = 0; i < samples; ++i) {
+    sampler->start_sample({i % film.width(), i / film.width() % film.height()}, uint64_t(i), 7);
+    const Vec2 raster{sampler->next_1d() * film.width(), sampler->next_1d() * film.height()};
+    trace_camera_subpath(scene, scene.sensor().generate_ray(raster, sampler->next_2d()), *sampler, camera_limits,
+                         camera);
+    compute_densities(scene, camera);
+    trace_light_subpath(scene, *sampler, light_limits, light);
+    compute_densities(scene, light);
+    for (int t = 1; t <= int(camera.size()); ++t)
+      for (int s = 0; s <= int(light.size()); ++s) {
+        if (s + t < 2 || s + t - 1 > 8) continue;
+        if (s == 0 && (t < 2 || !(camera[t - 1].emitter || camera[t - 1].environment))) continue;
+        std::vector<PathVertex> camera_part(camera.begin(), camera.begin() + t);
+        if (s == 0 && camera_part.back().environment) camera_part.back().emitter = scene.infinite_emitters()[0];
+        std::vector<PathVertex> x = join(light, camera_part, s, t);
+        if (!possible(x, s) || !carries_light(scene, x, s)) continue;
+        const int k = s + t - 1;
+        double sum = 0;
+        for (int sp = 0; sp <= k; ++sp)
+          if (possible(x, sp)) sum += recomputed_weight(scene, x, sp, h);
+        const float own = strategy_weight(scene, std::span(light).first(s), camera_part, s, t, h);
+        const float fresh = recomputed_weight(scene, x, s, h);
+        ++tally.paths;
+        tally.environment += x[0].environment;
+        tally.point_light += x[0].delta_light;
+        tally.through_delta += std::any_of(x.begin(), x.end(), [](const PathVertex& v) { return v.delta; });
+        ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
+        ASSERT_NEAR(own, fresh, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
+      }
+  }
+}
+
+TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
+  const auto glass = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "16"}});
+  const auto mixed = test::scene_from_xml(kMixedScene);
+  for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance}) {
+    Tally tally;
+    check_scene(*glass, h, 1000, tally);
+    check_scene(*mixed, h, 1000, tally);
+    // Enough paths of every kind were seen for the test to mean something.
+    EXPECT_GT(tally.paths, 5000);
+    EXPECT_GT(tally.environment, 100);
+    EXPECT_GT(tally.point_light, 100);
+    EXPECT_GT(tally.through_delta, 100);
+    std::printf("%d paths: %d from the environment, %d from the point light, %d through delta lobes\n", tally.paths,
+                tally.environment, tally.point_light, tally.through_delta);
+  }
+}
+
+}  // namespace
+}  // namespace caustica
