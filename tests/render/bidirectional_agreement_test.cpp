@@ -1,0 +1,120 @@
+// ptracer and bdpt against path on the Cornell-box family: per region of
+// 4x4 pixels, the mean over its pixels and channels agrees with the stored
+// path reference (24x24, 16384 spp; scripts/make-test-references.sh).
+//
+// ptracer and bdpt splat, so their region means' standard errors come from
+// independent runs; the reference's from its per-pixel variance layers
+// (taking its channels as fully correlated, an upper bound). Each
+// difference is tested at 1%, Sidak-corrected over all regions, integrators
+// and scenes, against Student's t with the runs' degrees of freedom (which
+// is conservative, the reference's variance being far better known).
+//
+// A pinhole cannot be reached by a light path through a delta surface, so
+// regions where the camera sees a mirror or smooth glass are left out for
+// ptracer: it renders nothing there, by design.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/bsdf/bsdf.h"
+#include "core/image/image_input.h"
+#include "core/scene/scene_loader.h"
+#include "tests/support/chi2.h"
+#include "tests/support/independent_runs.h"
+#include "tests/support/test_scenes.h"
+#include "tests/support/z_test.h"
+
+namespace caustica {
+namespace {
+
+constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 32;
+const char* const kScenes[] = {"cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"};
+struct Integrator {
+  const char* name;
+  uint32_t spp;
+};
+// Many short runs rather than a few long ones: the same cost, but a
+// variance estimate with more degrees of freedom and so a tighter bound.
+const Integrator kIntegrators[] = {{"ptracer", 64}, {"bdpt", 8}};
+constexpr int kTests = int(std::size(kScenes) * std::size(kIntegrators)) * kRegionsPerSide * kRegionsPerSide;
+
+// Region means of the reference and their standard errors.
+std::vector<test::RegionEstimate> reference_regions(const std::string& name, const std::vector<test::Region>& regions) {
+  const Image ref = read_image(std::string(CAUSTICA_SOURCE_DIR) + "/tests/data/references/" + name + ".exr");
+  const auto channel = [&](const std::string& c) {
+    return size_t(std::find(ref.channels.begin(), ref.channels.end(), c) - ref.channels.begin());
+  };
+  const size_t nc = ref.channels.size();
+  const size_t rgb[3] = {channel("R"), channel("G"), channel("B")};
+  const size_t var[3] = {channel("variance.R"), channel("variance.G"), channel("variance.B")};
+  std::vector<test::RegionEstimate> out;
+  for (const test::Region& g : regions) {
+    double sum = 0, variance = 0;
+    for (int y = g.lo.y; y < g.hi.y; ++y)
+      for (int x = g.lo.x; x < g.hi.x; ++x) {
+        const float* p = &ref.pixels[(size_t(y) * kRes + x) * nc];
+        double sigma = 0;
+        for (int c = 0; c < 3; ++c) {
+          sum += p[rgb[c]];
+          sigma += std::sqrt(p[var[c]]);
+        }
+        variance += sigma * sigma / 9;
+      }
+    const double n = double(g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
+    out.push_back({sum / (3 * n), std::sqrt(variance) / n, 0});
+  }
+  return out;
+}
+
+// Whether any camera ray within the filter's reach of the region first
+// meets a surface with a delta lobe.
+bool seen_through_delta(const Scene& scene, const test::Region& g) {
+  const float r = scene.sensor().film()->filter().radius();
+  constexpr int kSteps = 6;
+  for (int y = g.lo.y; y < g.hi.y; ++y)
+    for (int x = g.lo.x; x < g.hi.x; ++x)
+      for (int j = 0; j <= kSteps; ++j)
+        for (int i = 0; i <= kSteps; ++i) {
+          const Vec2 raster{x + 0.5f - r + 2 * r * i / kSteps, y + 0.5f - r + 2 * r * j / kSteps};
+          const auto si = scene.intersect(scene.sensor().generate_ray(raster, {0.5f, 0.5f}));
+          if (si && (si->shape->bsdf()->lobes() & kDelta)) return true;
+        }
+  return false;
+}
+
+class BidirectionalAgreement : public testing::TestWithParam<const char*> {};
+
+TEST_P(BidirectionalAgreement, RegionMeansMatchPath) {
+  const std::string name = GetParam();
+  const auto regions = test::grid_regions(kRes, kRes, kRegionsPerSide);
+  const auto reference = reference_regions(name, regions);
+  const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, kTests), kRuns - 1);
+  for (const Integrator& integrator : kIntegrators) {
+    const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml",
+                                  {{"res", std::to_string(kRes)}, {"integrator", integrator.name}});
+    const auto estimates = test::estimate_regions(*scene, regions, integrator.spp, kRuns, 1000);
+    int compared = 0;
+    for (size_t i = 0; i < regions.size(); ++i) {
+      if (std::string(integrator.name) == "ptracer" && seen_through_delta(*scene, regions[i])) continue;
+      ++compared;
+      const double score = test::difference_score(estimates[i], reference[i]);
+      EXPECT_LT(std::abs(score), t_critical)
+          << name << " " << integrator.name << " region (" << regions[i].lo.x << ", " << regions[i].lo.y
+          << "): " << estimates[i].mean << " +- " << estimates[i].standard_error << ", path reference "
+          << reference[i].mean << " +- " << reference[i].standard_error;
+    }
+    EXPECT_GE(compared, 24) << name << " " << integrator.name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BidirectionalAgreement, testing::ValuesIn(kScenes),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           std::string s = info.param;
+                           for (char& ch : s)
+                             if (ch == '-') ch = '_';
+                           return s;
+                         });
+
+}  // namespace
+}  // namespace caustica
