@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/bsdf/bsdf.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica::test {
@@ -15,11 +16,16 @@ std::vector<Region> grid_regions(int width, int height, int n) {
 }
 
 std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vector<Region>& regions, uint32_t spp,
-                                             int runs, uint64_t first_seed) {
+                                             int runs, uint64_t first_seed, uint64_t* non_finite) {
   const int width = scene.sensor().film()->width();
   std::vector<double> sum(regions.size(), 0), sum2(regions.size(), 0);
   for (int r = 0; r < runs; ++r) {
-    const auto img = render_scene(scene, spp, first_seed + r).resolve();
+    const FilmBuffer film = render_scene(scene, spp, first_seed + r);
+    const auto img = film.resolve();
+    if (non_finite) {
+      *non_finite += film.dropped_samples();
+      for (float v : img) *non_finite += !std::isfinite(v);
+    }
     const size_t nc = img.size() / (size_t(width) * scene.sensor().film()->height());
     for (size_t i = 0; i < regions.size(); ++i) {
       double mean = 0;
@@ -39,6 +45,20 @@ std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vect
     out[i] = {mean, std::sqrt(variance / runs), runs};
   }
   return out;
+}
+
+bool seen_through_delta(const Scene& scene, const Region& g) {
+  const float r = scene.sensor().film()->filter().radius();
+  constexpr int kSteps = 6;
+  for (int y = g.lo.y; y < g.hi.y; ++y)
+    for (int x = g.lo.x; x < g.hi.x; ++x)
+      for (int j = 0; j <= kSteps; ++j)
+        for (int i = 0; i <= kSteps; ++i) {
+          const Vec2 raster{x + 0.5f - r + 2 * r * i / kSteps, y + 0.5f - r + 2 * r * j / kSteps};
+          const auto si = scene.intersect(scene.sensor().generate_ray(raster, {0.5f, 0.5f}));
+          if (si && (si->shape->bsdf()->lobes() & kDelta)) return true;
+        }
+  return false;
 }
 
 double difference_score(const RegionEstimate& a, const RegionEstimate& b) {

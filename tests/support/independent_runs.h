@@ -24,8 +24,15 @@ struct RegionEstimate {
   double mean = 0, standard_error = 0;
   int runs = 0;
 };
+// `non_finite`, if given, receives the number of samples and splats the
+// film dropped for not being finite, plus the non-finite pixels.
 std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vector<Region>& regions, uint32_t spp,
-                                             int runs, uint64_t first_seed);
+                                             int runs, uint64_t first_seed, uint64_t* non_finite = nullptr);
+
+// Whether any camera ray within the filter's reach of the region first
+// meets a surface with a delta lobe: light paths cannot reach a pinhole
+// through such a surface, so light tracing leaves these regions dark.
+bool seen_through_delta(const Scene& scene, const Region& region);
 
 // (a - b) / sqrt(se_a^2 + se_b^2), for a two-sample test; a small relative
 // rounding spread keeps noise-free estimates comparable.
