@@ -1,0 +1,77 @@
+// bdpt's per-strategy layers: one per (s, t) for paths up to the requested
+// length, in a fixed order, summing to the beauty when they cover every
+// path the integrator renders; and the parameters' bad values.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/scene/scene_loader.h"
+#include "tests/support/test_scenes.h"
+
+namespace caustica {
+namespace {
+
+using testing::HasSubstr;
+
+const std::string kScene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml";
+
+TEST(BdptStrategyLayers, NamedByStrategyInOrder) {
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='bdpt'><integer name='strategy_layers' "
+      "value='2'/></integrator></scene>");
+  EXPECT_THAT(scene->integrator()->channels(),
+              testing::ElementsAre("R", "G", "B", "s0t2.R", "s0t2.G", "s0t2.B", "s1t1.R", "s1t1.G", "s1t1.B", "s0t3.R",
+                                   "s0t3.G", "s0t3.B", "s1t2.R", "s1t2.G", "s1t2.B", "s2t1.R", "s2t1.G", "s2t1.B"));
+}
+
+// With max_depth equal to the layers' reach, every contribution lands in
+// exactly one layer, splats included.
+TEST(BdptStrategyLayers, SumToTheBeauty) {
+  const auto scene = load_scene(kScene, {{"res", "24"}, {"integrator", "bdpt"}, {"max_depth", "3"}});
+  scene->set_integrator(test::scene_from_xml("<scene version='3.0.0'><integrator type='bdpt'><integer "
+                                             "name='max_depth' value='3'/><integer name='strategy_layers' "
+                                             "value='3'/></integrator></scene>")
+                            ->integrator());
+  const auto channels = scene->integrator()->channels();
+  ASSERT_EQ(channels.size(), 3u + 3 * (2 + 3 + 4));
+  const auto img = test::render_scene(*scene, 8, 3).resolve();
+  const size_t nc = channels.size();
+  double beauty = 0, layers = 0;
+  for (size_t p = 0; p < img.size() / nc; ++p)
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (size_t l = 3 + c; l < nc; l += 3) sum += img[p * nc + l];
+      EXPECT_NEAR(sum, img[p * nc + c], 1e-4 * (1 + std::abs(img[p * nc + c]))) << "pixel " << p;
+      beauty += img[p * nc + c];
+      layers += sum;
+    }
+  EXPECT_GT(beauty, 0);
+  // The caustic under the sphere comes from light tracing: some light lands
+  // in layers with t = 1.
+  double light_traced = 0;
+  for (size_t l = 0; l < nc; ++l)
+    if (channels[l].find("t1.") != std::string::npos)
+      for (size_t p = 0; p < img.size() / nc; ++p) light_traced += img[p * nc + l];
+  EXPECT_GT(light_traced, 0.01 * beauty);
+}
+
+TEST(BdptStrategyLayers, BadParameters) {
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='bdpt'>\n"
+                               "<string name='mis' value='cubic'/></integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'mis' of integrator 'bdpt': must be power or balance, not 'cubic'"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='bdpt'>\n"
+                               "<integer name='strategy_layers' value='13'/></integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'strategy_layers' of integrator 'bdpt': must be between 0 and 12"));
+  EXPECT_THAT(
+      test::load_error("<scene version='3.0.0'><integrator type='ptracer'>\n"
+                       "<integer name='max_depth' value='-2'/></integrator></scene>"),
+      HasSubstr("test.xml:2: parameter 'max_depth' of integrator 'ptracer': must be -1 (unlimited) or at least 0"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='bdpt'>\n"
+                               "<float name='rr_max_survival' value='0'/></integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'rr_max_survival' of integrator 'bdpt': must be in (0, 1]"));
+}
+
+}  // namespace
+}  // namespace caustica
