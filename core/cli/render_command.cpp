@@ -30,7 +30,7 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("-o,--output", output_, "output EXR (default: SCENE_NAME.exr); the PNG goes beside it");
   auto* spp = command_->add_option("--spp", spp_, "samples per pixel (default: the scene's sampler)");
   command_->add_option("--time", time_, "render for this many seconds instead")->excludes(spp);
-  command_->add_option("--integrator", integrator_, "replace the scene's integrator (default parameters)");
+  command_->add_option("--integrator", integrator_, "replace the scene's integrator: NAME or NAME:param=value,...");
   command_->add_option("-D", defines_, "define a scene parameter: -D name=value")->allow_extra_args(false);
   command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command_->add_option("--seed", seed_, "random seed");
@@ -102,7 +102,7 @@ int RenderCommand::run() const {
   // image (of the first pass) rather than in nothing.
   install_interrupt_handler();
   auto scene = load_scene(scene_, parse_defines(defines_));
-  if (!integrator_.empty()) scene->set_integrator(make_default_integrator(integrator_));
+  if (!integrator_.empty()) scene->set_integrator(make_integrator(integrator_));
   if (!debug_pixel_.empty()) return replay(*scene);
 
   const std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;

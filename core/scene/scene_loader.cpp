@@ -1,6 +1,7 @@
 #include "core/scene/scene_loader.h"
 
 #include <set>
+#include <sstream>
 
 #include "core/bsdf/bsdf.h"
 #include "core/registry/properties.h"
@@ -173,7 +174,7 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
     }
   }
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
-  if (!integrator) integrator = make_default_integrator("path");
+  if (!integrator) integrator = make_integrator("path");
   auto scene = std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor),
                                        std::move(integrator), source);
   scene->set_tone_operator(std::move(tone_operator));
@@ -191,12 +192,28 @@ std::unique_ptr<Scene> load_scene_string(std::string_view xml, const std::filesy
   return instantiate(read_scene_xml_string(xml, file_for_messages, defines), file_for_messages.string());
 }
 
-std::shared_ptr<Integrator> make_default_integrator(const std::string& name) {
+std::shared_ptr<Integrator> make_integrator(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
   const PluginInfo* info = Registry::instance().find("integrator", name);
   if (!info)
     throw std::invalid_argument("unknown integrator '" + name +
                                 "' (available: " + join_names(Registry::instance().names("integrator")) + ")");
-  return Registry::instance().create_default<Integrator>("integrator", name, {name, 0});
+  const SourceLocation where{"--integrator " + spec, 0};
+  Properties props(*info, where);
+  if (colon != std::string::npos) {
+    std::istringstream list(spec.substr(colon + 1));
+    for (std::string item; std::getline(list, item, ',');) {
+      const size_t eq = item.find('=');
+      if (eq == std::string::npos || eq == 0) throw SceneError(where, "expected name=value, got '" + item + "'");
+      const std::string param = item.substr(0, eq);
+      const ParamSpec* declared = info->param(param);
+      // Unknown names fall through to set(), which lists what is accepted.
+      const ValueKind kind = declared ? default_kind(declared->type) : ValueKind::String;
+      props.set(param, parse_value_text(kind, item.substr(eq + 1), where));
+    }
+  }
+  return std::dynamic_pointer_cast<Integrator>(info->create(props));
 }
 
 }  // namespace caustica

@@ -19,7 +19,10 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const Defin
 std::unique_ptr<Scene> load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
                                          const Defines& defines = {});
 
-// An integrator by name with its default parameters, for --integrator.
-std::shared_ptr<Integrator> make_default_integrator(const std::string& name);
+// An integrator from a command-line spec, for --integrator: its name,
+// optionally followed by parameters as in "bdpt:max_depth=3,mis=balance".
+// Values are read as the scene file would read the declared type; errors
+// name the spec.
+std::shared_ptr<Integrator> make_integrator(const std::string& spec);
 
 }  // namespace caustica

@@ -239,11 +239,36 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
   try {
-    make_default_integrator("bdpt2");
+    make_integrator("bdpt2");
     FAIL();
   } catch (const std::exception& e) {
     EXPECT_THAT(e.what(), HasSubstr("unknown integrator 'bdpt2' (available: aov, bdpt, direct, path, ptracer"));
   }
+}
+
+TEST(SceneLoader, IntegratorSpecWithParameters) {
+  const auto bdpt = make_integrator("bdpt:max_depth=3,mis=balance,strategy_layers=2");
+  EXPECT_EQ(bdpt->describe(),
+            "bdpt max_depth=3 rr_depth=5 rr_max_survival=0.950000 hide_emitters=false mis=balance strategy_layers=2");
+  EXPECT_EQ(make_integrator("path:hide_emitters=true")->describe(),
+            "path max_depth=-1 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
+}
+
+TEST(SceneLoader, BadIntegratorSpecs) {
+  const auto message = [](const std::string& spec) {
+    try {
+      make_integrator(spec);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_THAT(message("bdpt:max_depth"),
+              HasSubstr("--integrator bdpt:max_depth: expected name=value, got 'max_depth'"));
+  EXPECT_THAT(message("bdpt:depth=3"), HasSubstr("--integrator bdpt:depth=3: "));
+  EXPECT_THAT(message("bdpt:depth=3"), HasSubstr("max_depth"));
+  EXPECT_THAT(message("path:max_depth=two"), HasSubstr("--integrator path:max_depth=two: "));
+  EXPECT_THAT(message("bdpt:mis=cubic"), HasSubstr("must be power or balance, not 'cubic'"));
 }
 
 }  // namespace
