@@ -56,7 +56,7 @@ def parse_args():
     parser.add_argument("--scenes", help="comma-separated names under scenes/ (default: the scale's)")
     parser.add_argument("--threads", type=int, default=os.cpu_count())
     parser.add_argument("--caustica", type=Path, default=ROOT / "build" / "caustica")
-    parser.add_argument("--publish", type=Path, help="also copy the plots and summary here (e.g. docs/bench)")
+    parser.add_argument("--publish", type=Path, help="also copy the PNG plots and the summary here (e.g. docs/bench)")
     return parser.parse_args()
 
 
@@ -133,7 +133,7 @@ def main():
 
     if args.publish:
         args.publish.mkdir(parents=True, exist_ok=True)
-        for name in ["convergence.png", "convergence.svg", "variance.png"]:
+        for name in ["convergence.png", "variance.png"]:
             shutil.copy(out / "plots" / name, args.publish / name)
         shutil.copy(out / "summary.md", args.publish / "summary.md")
 
