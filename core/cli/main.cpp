@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <iostream>
 
+#include "core/cli/compare_command.h"
 #include "core/cli/info_command.h"
+#include "core/cli/merge_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/tonemap_command.h"
 
@@ -17,11 +19,17 @@ int main(int argc, char** argv) {
   info.add_to(app);
   caustica::TonemapCommand tonemap;
   tonemap.add_to(app);
+  caustica::MergeCommand merge;
+  merge.add_to(app);
+  caustica::CompareCommand compare;
+  compare.add_to(app);
   CLI11_PARSE(app, argc, argv);
   try {
     if (render.chosen()) return render.run();
     if (info.chosen()) return info.run();
     if (tonemap.chosen()) return tonemap.run();
+    if (merge.chosen()) return merge.run();
+    if (compare.chosen()) return compare.run();
   } catch (const std::exception& e) {
     std::cerr << "caustica: error: " << e.what() << "\n";
     return 1;

@@ -136,6 +136,8 @@ int RenderCommand::run() const {
                                                        {"caustica:integrator", scene->integrator()->describe()},
                                                        {"caustica:spp", std::to_string(stats.spp)},
                                                        {"caustica:seconds", std::to_string(stats.seconds)},
+                                                       {"caustica:samples", std::to_string(stats.samples)},
+                                                       {"caustica:rays", std::to_string(stats.rays)},
                                                        {"caustica:seed", std::to_string(seed_)},
                                                        {"caustica:interrupted", stats.interrupted ? "true" : "false"},
                                                        {"caustica:develop", developer.describe()},

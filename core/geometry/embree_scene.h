@@ -21,6 +21,8 @@ class EmbreeScene {
   std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
   // Whether anything blocks the ray before t_max.
   bool occluded(const Ray& ray) const;
+  // Embree's scene, for benchmarks that measure Embree alone on the same geometry.
+  RTCScene rtc_scene() const { return scene_; }
 
  private:
   RTCDevice device_ = nullptr;

@@ -13,6 +13,13 @@ struct Image {
   int width = 0, height = 0;
   std::vector<std::string> channels;
   std::vector<float> pixels;
+
+  // The position of a channel in each pixel, or -1 if the image has none of that name.
+  int channel_index(const std::string& name) const {
+    for (size_t c = 0; c < channels.size(); ++c)
+      if (channels[c] == name) return int(c);
+    return -1;
+  }
 };
 
 // Writes a linear OpenEXR file (float or half) with string metadata; atomic.

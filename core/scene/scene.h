@@ -10,6 +10,7 @@
 #include "core/camera/sensor.h"
 #include "core/color/tone_operator.h"
 #include "core/geometry/embree_scene.h"
+#include "core/geometry/ray_log.h"
 #include "core/lights/emitter.h"
 #include "core/render/integrator.h"
 #include "core/render/light_selection.h"
@@ -25,12 +26,19 @@ class Scene {
 
   std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
     ++rays_traced_.local();
+    if (ray_log_) ray_log_->record(ray, false);
     return accel_->intersect(ray);
   }
   bool occluded(const Ray& ray) const {
     ++rays_traced_.local();
+    if (ray_log_) ray_log_->record(ray, true);
     return accel_->occluded(ray);
   }
+  // Records every ray traced from now on into `log` (null to stop); for
+  // benchmarks that replay a render's rays.
+  void set_ray_log(RayLog* log) { ray_log_ = log; }
+  // The acceleration structure itself, for benchmarks that query Embree directly.
+  const EmbreeScene& accel() const { return *accel_; }
   // Rays traced so far, over all threads.
   uint64_t rays_traced() const;
 
@@ -59,6 +67,7 @@ class Scene {
   std::unique_ptr<EmbreeScene> accel_;
   std::unique_ptr<LightSelection> lights_;
   mutable tbb::enumerable_thread_specific<uint64_t> rays_traced_{0};
+  RayLog* ray_log_ = nullptr;
 };
 
 }  // namespace caustica

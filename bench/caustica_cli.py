@@ -1,0 +1,60 @@
+"""The caustica executable as the benchmarks call it: render, merge, compare."""
+
+import subprocess
+
+import OpenImageIO as oiio
+
+
+class UnknownIntegrator(Exception):
+    """The binary has no integrator of that name (it may not have landed yet)."""
+
+
+class Caustica:
+    def __init__(self, binary, threads):
+        self.binary = str(binary)
+        self.threads = threads
+
+    def _run(self, args):
+        result = subprocess.run([self.binary, *map(str, args)], capture_output=True, text=True)
+        if result.returncode != 0:
+            message = result.stderr.strip() or result.stdout.strip()
+            if "unknown integrator" in message:
+                raise UnknownIntegrator(message)
+            raise RuntimeError(f"caustica {args[0]} failed: {message}")
+        return result.stdout
+
+    def render(self, scene, output, *, integrator, spp, seed, res):
+        """Renders a float EXR (and its PNG); returns the EXR's metadata."""
+        self._run(["render", scene, "-o", output, "--integrator", integrator, "--spp", spp, "--seed", seed,
+                   "-D", f"res={res}", "--threads", self.threads, "--exr-format", "float", "-q"])
+        return read_metadata(output)
+
+    def merge(self, inputs, output):
+        """Merges independent renders; returns the merged EXR's metadata."""
+        self._run(["merge", *inputs, "-o", output])
+        return read_metadata(output)
+
+    def compare(self, image, reference):
+        """The error metrics of `image` against `reference`, by name (see caustica compare)."""
+        out = self._run(["compare", image, reference])
+        return {name: float(value) for name, value in (line.split() for line in out.splitlines())}
+
+
+def _spec(path):
+    image = oiio.ImageInput.open(str(path))
+    if image is None:
+        raise RuntimeError(f"cannot read {path}: {oiio.geterror()}")
+    spec = image.spec()
+    image.close()
+    return spec
+
+
+def image_size(path):
+    spec = _spec(path)
+    return spec.width, spec.height
+
+
+def read_metadata(path):
+    """An EXR's caustica:* metadata, without the prefix."""
+    spec = _spec(path)
+    return {a.name.split(":", 1)[1]: a.value for a in spec.extra_attribs if a.name.startswith("caustica:")}

@@ -1,0 +1,147 @@
+#include "core/image/render_merge.h"
+
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/image/image_input.h"
+
+namespace caustica {
+
+namespace {
+
+std::invalid_argument part_error(const RenderFile& part, const std::string& problem) {
+  return std::invalid_argument("'" + part.path + "' " + problem);
+}
+
+std::string value_of(const RenderFile& part, const std::string& key) {
+  const auto it = part.metadata.find(key);
+  return it == part.metadata.end() ? std::string() : it->second;
+}
+
+double number_of(const RenderFile& part, const std::string& key) {
+  const std::string text = value_of(part, key);
+  try {
+    size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size()) return value;
+  } catch (const std::exception&) {
+  }
+  throw part_error(part, "has no number in its " + key + " metadata (got '" + text + "')");
+}
+
+// The number of samples in each pixel of a render.
+std::vector<double> sample_counts(const RenderFile& part) {
+  const Image& image = part.image;
+  const size_t pixels = size_t(image.width) * image.height, nc = image.channels.size();
+  const int layer = image.channel_index("samples.Y");
+  if (layer < 0) return std::vector<double>(pixels, number_of(part, "caustica:spp"));
+  std::vector<double> counts(pixels);
+  for (size_t p = 0; p < pixels; ++p) counts[p] = image.pixels[p * nc + layer];
+  return counts;
+}
+
+void check_compatible(const RenderFile& first, const RenderFile& part) {
+  if (part.image.width != first.image.width || part.image.height != first.image.height)
+    throw part_error(part, "differs in size from '" + first.path + "'");
+  if (part.image.channels != first.image.channels)
+    throw part_error(part, "has other channels than '" + first.path + "'");
+  for (const char* key : {"caustica:scene", "caustica:integrator"})
+    if (value_of(part, key) != value_of(first, key))
+      throw part_error(part, std::string("has another ") + key + " than '" + first.path + "' ('" + value_of(part, key) +
+                                 "' against '" + value_of(first, key) + "')");
+}
+
+enum class Rule { Mean, Variance, Count };
+
+Rule rule_for(const std::string& channel) {
+  if (channel == "samples.Y") return Rule::Count;
+  if (channel.rfind("variance.", 0) == 0) return Rule::Variance;
+  return Rule::Mean;
+}
+
+}  // namespace
+
+std::vector<std::string> render_seeds(const RenderFile& render) {
+  std::string list = value_of(render, "caustica:seeds");
+  if (list.empty()) list = value_of(render, "caustica:seed");
+  std::vector<std::string> seeds;
+  std::istringstream in(list);
+  for (std::string seed; std::getline(in, seed, ',');)
+    if (!seed.empty()) seeds.push_back(seed);
+  return seeds;
+}
+
+RenderFile read_render(const std::string& path) {
+  RenderFile file{path, {}, {}};
+  file.image = read_image(path, &file.metadata);
+  return file;
+}
+
+RenderFile merge_renders(const std::vector<RenderFile>& parts) {
+  if (parts.empty()) throw std::invalid_argument("nothing to merge");
+  const RenderFile& first = parts.front();
+  std::map<std::string, std::string> seed_owner;
+  for (const RenderFile& part : parts) {
+    check_compatible(first, part);
+    for (const std::string& seed : render_seeds(part))
+      if (const auto [it, fresh] = seed_owner.emplace(seed, part.path); !fresh)
+        throw part_error(part, "and '" + it->second + "' were both rendered with seed " + seed +
+                                   ": they hold the same samples, not independent ones");
+  }
+
+  const Image& shape = first.image;
+  const size_t pixels = size_t(shape.width) * shape.height, nc = shape.channels.size();
+  std::vector<Rule> rules;
+  for (const std::string& c : shape.channels) rules.push_back(rule_for(c));
+  std::vector<double> sums(pixels * nc, 0), totals(pixels, 0);
+  for (const RenderFile& part : parts) {
+    const std::vector<double> counts = sample_counts(part);
+    for (size_t p = 0; p < pixels; ++p) {
+      const double n = counts[p];
+      totals[p] += n;
+      for (size_t c = 0; c < nc; ++c) {
+        const double v = part.image.pixels[p * nc + c];
+        sums[p * nc + c] += rules[c] == Rule::Variance ? n * n * v : rules[c] == Rule::Count ? v : n * v;
+      }
+    }
+  }
+
+  RenderFile merged{
+      "", {shape.width, shape.height, shape.channels, std::vector<float>(pixels * nc, 0)}, first.metadata};
+  for (size_t p = 0; p < pixels; ++p) {
+    const double N = totals[p];
+    if (N == 0) continue;
+    for (size_t c = 0; c < nc; ++c) {
+      const double s = sums[p * nc + c];
+      merged.image.pixels[p * nc + c] = float(rules[c] == Rule::Variance ? s / (N * N)
+                                              : rules[c] == Rule::Count  ? s
+                                                                         : s / N);
+    }
+  }
+
+  std::string seeds;
+  for (const RenderFile& part : parts)
+    for (const std::string& seed : render_seeds(part)) seeds += (seeds.empty() ? "" : ",") + seed;
+  merged.metadata.erase("caustica:seed");
+  merged.metadata["caustica:seeds"] = seeds;
+  bool interrupted = false;
+  for (const RenderFile& part : parts) interrupted = interrupted || value_of(part, "caustica:interrupted") == "true";
+  merged.metadata["caustica:interrupted"] = interrupted ? "true" : "false";
+  for (const char* key : {"caustica:spp", "caustica:seconds", "caustica:samples", "caustica:rays"}) {
+    bool everywhere = true;
+    for (const RenderFile& part : parts) everywhere = everywhere && !value_of(part, key).empty();
+    if (!everywhere) {
+      merged.metadata.erase(key);
+      continue;
+    }
+    double total = 0;
+    for (const RenderFile& part : parts) total += number_of(part, key);
+    // Counts stay integers; seconds keep render's six decimals.
+    merged.metadata[key] =
+        std::string(key) == "caustica:seconds" ? std::to_string(total) : std::to_string(uint64_t(total + 0.5));
+  }
+  return merged;
+}
+
+}  // namespace caustica
