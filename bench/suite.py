@@ -32,7 +32,7 @@ import summary
 import variance
 from caustica_cli import Caustica
 from reference import make_reference
-from suite_config import INTEGRATORS, REFERENCE_INTEGRATOR, SCALES, spp_ladder
+from suite_config import INTEGRATORS, REFERENCE_INTEGRATOR, SCALES, TWIN_SEED_BASE, spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -76,15 +76,23 @@ def run_scenes(caustica, scenes, integrators, scale, out):
     return rows, skipped
 
 
-def measure_variance(rows, out):
-    """variance.csv and plots/variance.png from each integrator's longest run; returns the CSV rows."""
+def measure_variance(caustica, rows, out, res):
+    """variance.csv and plots/variance.png from each integrator's longest run; returns the CSV rows.
+
+    Runs without variance layers (integrators that splat) get an independent twin render to estimate it from.
+    """
     measured = []
     for scene, by_integrator in summary.by_scene_and_integrator(rows).items():
         row_images = []
         for integrator, runs in by_integrator.items():
             last = runs[-1]
             exr = convergence.render_path(out / "renders" / scene, integrator, int(last["spp"]))
-            row_images.append(variance.measure(scene, integrator, last, exr))
+            twin = None
+            if not variance.has_variance_layers(exr):
+                twin = exr.with_name(exr.stem + "-twin.exr")
+                caustica.render(ROOT / "scenes" / f"{scene}.xml", twin, integrator=integrator, spp=int(last["spp"]),
+                                seed=TWIN_SEED_BASE + len(runs), res=res)
+            row_images.append(variance.measure(scene, integrator, last, exr, twin))
         measured.append((scene, row_images))
     variance_rows = [row for _, row_images in measured for row, _ in row_images]
     variance.write_csv(out / "variance.csv", variance_rows)
@@ -120,13 +128,14 @@ def main():
     print(f"caustica bench, scale {args.scale}: {scenes} x {integrators} at {spp_ladder(scale.max_spp)} spp, "
           f"{scale.res}x{scale.res} pixels -> {out}")
 
-    rows, skipped = run_scenes(Caustica(args.caustica, args.threads), scenes, integrators, scale, out)
+    caustica = Caustica(args.caustica, args.threads)
+    rows, skipped = run_scenes(caustica, scenes, integrators, scale, out)
     if not rows:
         sys.exit("caustica bench: no integrator ran")
     convergence.write_csv(out / "convergence.csv", rows)
     title = f"caustica, {args.scale} scale: {scale.res}x{scale.res} pixels, {args.threads} threads"
     plots.plot_convergence(rows, out / "plots", scale.target_rel_mse, title)
-    variance_rows = measure_variance(rows, out)
+    variance_rows = measure_variance(caustica, rows, out, scale.res)
     text = summary_text(args, scale, rows, variance_rows, skipped, time.monotonic() - started)
     (out / "summary.md").write_text(text)
     print(text)

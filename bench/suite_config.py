@@ -8,7 +8,7 @@ so the list may run ahead of the binary.
 from dataclasses import dataclass
 
 # In plot and table order.
-INTEGRATORS = ["path", "direct"]
+INTEGRATORS = ["path", "bdpt", "ptracer", "direct"]
 
 # The Cornell-box family: diffuse, glass (caustics), mirror, glossy metal.
 SCENES = ["cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"]
@@ -22,6 +22,8 @@ REFERENCE_INTEGRATOR = "path"
 # would share the reference's samples and errors.
 REFERENCE_SEED_BASE = 1_000_000
 RUN_SEED_BASE = 1
+# Twins of the longest runs, for the variance of integrators that splat.
+TWIN_SEED_BASE = 500_000
 
 
 @dataclass(frozen=True)

@@ -25,25 +25,49 @@ FIELDS = ["scene", "integrator", "spp", "seconds", "mean_variance", "mean_rel_va
 REL_EPSILON = 0.01
 
 
-def variance_images(exr):
-    """Per-pixel variance of the estimate and its relative form, averaged over R, G, B (2-D arrays)."""
+def _read(exr):
     image = oiio.ImageInput.open(str(exr))
     if image is None:
         raise RuntimeError(f"cannot read {exr}: {oiio.geterror()}")
     names = list(image.spec().channelnames)
     pixels = image.read_image("float")
     image.close()
+    return names, pixels
+
+
+def _channels(names, pixels, wanted, exr):
     try:
-        values = pixels[:, :, [names.index(c) for c in "RGB"]]
-        variances = pixels[:, :, [names.index(f"variance.{c}") for c in "RGB"]]
+        return pixels[:, :, [names.index(c) for c in wanted]]
     except ValueError:
-        raise RuntimeError(f"{exr} has no R, G, B and variance layers") from None
+        raise RuntimeError(f"{exr} has no {', '.join(wanted)} layers") from None
+
+
+def has_variance_layers(exr):
+    """Integrators that splat (bdpt, ptracer) write none: a pixel's splats come from other pixels' samples."""
+    names, _ = _read(exr)
+    return "variance.R" in names
+
+
+def variance_images(exr, twin=None):
+    """Per-pixel variance of the estimate and its relative form, averaged over R, G, B (2-D arrays).
+
+    From the EXR's variance layers, or, given `twin` (an independent render with the same settings), from
+    the two estimates: (a - b)^2 / 2 is an unbiased estimate of each pixel's variance, noisy per pixel
+    but exact on average.
+    """
+    names, pixels = _read(exr)
+    values = _channels(names, pixels, ["R", "G", "B"], exr)
+    if twin is None:
+        variances = _channels(names, pixels, [f"variance.{c}" for c in "RGB"], exr)
+    else:
+        twin_names, twin_pixels = _read(twin)
+        variances = (values - _channels(twin_names, twin_pixels, ["R", "G", "B"], twin)) ** 2 / 2
     return variances.mean(axis=2), (variances / (values**2 + REL_EPSILON)).mean(axis=2)
 
 
-def measure(scene, integrator, run, exr):
+def measure(scene, integrator, run, exr, twin=None):
     """A variance.csv row for one render (`run`: its convergence row) and its variance image."""
-    image, relative = variance_images(exr)
+    image, relative = variance_images(exr, twin)
     mean = float(image.mean())
     return {"scene": scene, "integrator": integrator, "spp": int(run["spp"]), "seconds": run["seconds"],
             "mean_variance": mean, "mean_rel_variance": float(relative.mean()),
