@@ -12,35 +12,23 @@
 #include <sstream>
 
 #include "core/image/image_input.h"
+#include "tests/support/command.h"
 
 namespace caustica {
 namespace {
 
 using testing::HasSubstr;
 
-struct CommandResult {
-  int status;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(CAUSTICA_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WEXITSTATUS(status), out};
-}
+using test::run_caustica;
 
 class MergeAndCompare : public testing::Test {
  protected:
   static void SetUpTestSuite() {
     std::filesystem::create_directories(dir());
     for (int seed : {1, 2, 3}) {
-      const CommandResult r =
-          run("render " + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml -o " + chunk(seed) +
-              " --spp 4 -D res=8 --threads 2 -q --exr-format float --seed " + std::to_string(seed));
+      const test::CommandResult r =
+          run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml -o " + chunk(seed) +
+                       " --spp 4 -D res=8 --threads 2 -q --exr-format float --seed " + std::to_string(seed));
       ASSERT_EQ(r.status, 0) << r.output;
     }
   }
@@ -60,7 +48,7 @@ class MergeAndCompare : public testing::Test {
 
 TEST_F(MergeAndCompare, MergeAddsSamplesAndStoresTheEstimatedError) {
   const std::string merged = (dir() / "merged.exr").string();
-  const CommandResult r = run("merge " + chunk(1) + " " + chunk(2) + " -o " + merged);
+  const test::CommandResult r = run_caustica("merge " + chunk(1) + " " + chunk(2) + " -o " + merged);
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("2 renders, 8 spp -> " + merged + ", estimated MSE "));
   std::map<std::string, std::string> metadata;
@@ -75,8 +63,8 @@ TEST_F(MergeAndCompare, MergeAddsSamplesAndStoresTheEstimatedError) {
 
 TEST_F(MergeAndCompare, CompareDiscountsTheReferenceNoise) {
   const std::string reference = (dir() / "reference.exr").string();
-  ASSERT_EQ(run("merge " + chunk(2) + " " + chunk(3) + " -o " + reference).status, 0);
-  const CommandResult r = run("compare " + chunk(1) + " " + reference);
+  ASSERT_EQ(run_caustica("merge " + chunk(2) + " " + chunk(3) + " -o " + reference).status, 0);
+  const test::CommandResult r = run_caustica("compare " + chunk(1) + " " + reference);
   ASSERT_EQ(r.status, 0) << r.output;
   const auto m = metrics(r.output);
   for (const char* name : {"mse", "mse_corrected", "rel_mse", "rel_mse_corrected", "mae", "reference_estimated_mse",
@@ -89,21 +77,22 @@ TEST_F(MergeAndCompare, CompareDiscountsTheReferenceNoise) {
 
 TEST_F(MergeAndCompare, SharedSeedsAreCaught) {
   const std::string reference = (dir() / "reference12.exr").string();
-  ASSERT_EQ(run("merge " + chunk(1) + " " + chunk(2) + " -o " + reference).status, 0);
-  EXPECT_THAT(run("compare " + chunk(1) + " " + reference).output,
+  ASSERT_EQ(run_caustica("merge " + chunk(1) + " " + chunk(2) + " -o " + reference).status, 0);
+  EXPECT_THAT(run_caustica("compare " + chunk(1) + " " + reference).output,
               HasSubstr("share seed 1: their errors are correlated"));
-  const CommandResult twice = run("merge " + chunk(1) + " " + chunk(1) + " -o " + (dir() / "x.exr").string());
+  const test::CommandResult twice =
+      run_caustica("merge " + chunk(1) + " " + chunk(1) + " -o " + (dir() / "x.exr").string());
   EXPECT_EQ(twice.status, 1);
   EXPECT_THAT(twice.output, HasSubstr("were both rendered with seed 1"));
 }
 
 TEST_F(MergeAndCompare, CompareRejectsImagesOfAnotherSize) {
   const std::string big = (dir() / "big.exr").string();
-  ASSERT_EQ(
-      run("render " + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml -o " + big + " --spp 1 -D res=9 -q")
-          .status,
-      0);
-  const CommandResult r = run("compare " + big + " " + chunk(1));
+  ASSERT_EQ(run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml -o " + big +
+                         " --spp 1 -D res=9 -q")
+                .status,
+            0);
+  const test::CommandResult r = run_caustica("compare " + big + " " + chunk(1));
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, HasSubstr("caustica: error: the image is 9x9 but the reference is 8x8"));
 }

@@ -15,25 +15,14 @@
 #include <fstream>
 #include <thread>
 
+#include "tests/support/command.h"
+
 namespace caustica {
 namespace {
 
 using testing::HasSubstr;
 
-struct CommandResult {
-  int status;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(CAUSTICA_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WEXITSTATUS(status), out};
-}
+using test::run_caustica;
 
 std::filesystem::path temp_dir() {
   const auto dir = std::filesystem::temp_directory_path() / "caustica_cli_test";
@@ -46,7 +35,8 @@ const std::string kCornell = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell
 TEST(RenderCommand, WritesExrAndPngAndASummary) {
   const auto exr = temp_dir() / "box.exr";
   std::filesystem::remove(exr);
-  const CommandResult r = run("render " + kCornell + " -o " + exr.string() + " --spp 2 -D res=24 --threads 2 --seed 3");
+  const test::CommandResult r =
+      run_caustica("render " + kCornell + " -o " + exr.string() + " --spp 2 -D res=24 --threads 2 --seed 3");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("24x24, 2 spp in"));
   EXPECT_THAT(r.output, HasSubstr("M rays/s"));
@@ -89,39 +79,41 @@ TEST(RenderCommand, WritesExrAndPngAndASummary) {
 }
 
 TEST(RenderCommand, DebugPixelReplaysOneSample) {
-  const CommandResult r = run("render " + kCornell + " -D res=24 --debug-pixel 12,12 --debug-sample 3");
+  const test::CommandResult r = run_caustica("render " + kCornell + " -D res=24 --debug-pixel 12,12 --debug-sample 3");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("R = "));
-  EXPECT_EQ(r.output, run("render " + kCornell + " -D res=24 --debug-pixel 12,12 --debug-sample 3").output);
+  EXPECT_EQ(r.output, run_caustica("render " + kCornell + " -D res=24 --debug-pixel 12,12 --debug-sample 3").output);
 }
 
 TEST(RenderCommand, IntegratorOverrideAndInfo) {
   const auto exr = temp_dir() / "aov.exr";
-  const CommandResult r = run("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=8 --integrator aov -q");
+  const test::CommandResult r =
+      run_caustica("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=8 --integrator aov -q");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output, "");
   auto in = OIIO::ImageInput::open(exr.string());
   ASSERT_TRUE(in);
   EXPECT_EQ(in->spec().channelnames[0], "albedo.R");
-  const CommandResult info = run("info " + kCornell);
+  const test::CommandResult info = run_caustica("info " + kCornell);
   EXPECT_THAT(info.output, HasSubstr("emitters: 1 (area: 1"));
 }
 
 TEST(RenderCommand, ErrorsNameTheProblem) {
-  EXPECT_THAT(run("render " + kCornell + " --integrator nope").output,
+  EXPECT_THAT(run_caustica("render " + kCornell + " --integrator nope").output,
               HasSubstr("caustica: error: unknown integrator 'nope'"));
-  EXPECT_THAT(run("render " + kCornell + " -D spp").output, HasSubstr("-D expects name=value, got 'spp'"));
-  EXPECT_THAT(run("render " + kCornell + " -D max_depth=-2").output,
+  EXPECT_THAT(run_caustica("render " + kCornell + " -D spp").output, HasSubstr("-D expects name=value, got 'spp'"));
+  EXPECT_THAT(run_caustica("render " + kCornell + " -D max_depth=-2").output,
               HasSubstr("cornell/room.xml:13: parameter 'max_depth' of integrator 'path': must be -1"));
-  EXPECT_THAT(run("render " + kCornell + " --debug-pixel 9999,1").output, HasSubstr("--debug-pixel expects X,Y"));
-  EXPECT_NE(run("render /nonexistent.xml").status, 0);
+  EXPECT_THAT(run_caustica("render " + kCornell + " --debug-pixel 9999,1").output,
+              HasSubstr("--debug-pixel expects X,Y"));
+  EXPECT_NE(run_caustica("render /nonexistent.xml").status, 0);
 }
 
 TEST(RenderCommand, DevelopmentOptions) {
   const auto exr = temp_dir() / "dev.exr";
-  const CommandResult r =
-      run("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=16 --exr-format float --tonemap filmic" +
-          " --exposure 1 --view ACES --look Bright --png-bits 16 -q");
+  const test::CommandResult r = run_caustica("render " + kCornell + " -o " + exr.string() +
+                                             " --spp 1 -D res=16 --exr-format float --tonemap filmic" +
+                                             " --exposure 1 --view ACES --look Bright --png-bits 16 -q");
   ASSERT_EQ(r.status, 0) << r.output;
   auto in = OIIO::ImageInput::open(exr.string());
   ASSERT_TRUE(in);
@@ -131,20 +123,21 @@ TEST(RenderCommand, DevelopmentOptions) {
   auto png = OIIO::ImageInput::open((temp_dir() / "dev.png").string());
   ASSERT_TRUE(png);
   EXPECT_EQ(png->spec().format, OIIO::TypeDesc::UINT16);
-  EXPECT_THAT(run("render " + kCornell + " --tonemap drago").output,
+  EXPECT_THAT(run_caustica("render " + kCornell + " --tonemap drago").output,
               HasSubstr("unknown tone operator 'drago' (available: aces, filmic, none, reinhard)"));
-  EXPECT_THAT(run("render " + kCornell + " --view Cinema").output, HasSubstr("OpenColorIO config"));
+  EXPECT_THAT(run_caustica("render " + kCornell + " --view Cinema").output, HasSubstr("OpenColorIO config"));
 }
 
 // Re-developing a render gives the same PNG as developing it at render time.
 TEST(TonemapCommand, RedevelopsWithoutRendering) {
   const auto exr = temp_dir() / "redevelop.exr";
-  ASSERT_EQ(run("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=16 --exr-format float" +
-                " --tonemap reinhard -q")
+  ASSERT_EQ(run_caustica("render " + kCornell + " -o " + exr.string() + " --spp 1 -D res=16 --exr-format float" +
+                         " --tonemap reinhard -q")
                 .status,
             0);
   const auto again = temp_dir() / "again.png";
-  const CommandResult r = run("tonemap " + exr.string() + " -o " + again.string() + " --tonemap reinhard");
+  const test::CommandResult r =
+      run_caustica("tonemap " + exr.string() + " -o " + again.string() + " --tonemap reinhard");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("reinhard key=0.180000"));
   const auto pixels = [](const std::filesystem::path& p) {
@@ -155,9 +148,9 @@ TEST(TonemapCommand, RedevelopsWithoutRendering) {
   };
   EXPECT_EQ(pixels(again), pixels(temp_dir() / "redevelop.png"));
   const auto brighter = temp_dir() / "brighter.png";
-  ASSERT_EQ(run("tonemap " + exr.string() + " -o " + brighter.string() + " --exposure 2").status, 0);
+  ASSERT_EQ(run_caustica("tonemap " + exr.string() + " -o " + brighter.string() + " --exposure 2").status, 0);
   EXPECT_NE(pixels(brighter), pixels(again));
-  EXPECT_THAT(run("tonemap /nonexistent.exr -o x.png").output, HasSubstr("nonexistent.exr"));
+  EXPECT_THAT(run_caustica("tonemap /nonexistent.exr -o x.png").output, HasSubstr("nonexistent.exr"));
 }
 
 // Ctrl-C stops at the next pass and still writes a valid image, with the
@@ -200,7 +193,7 @@ TEST(RenderCommand, FailedRunKeepsThePreviousImage) {
   std::ofstream(exr) << "previous";
   const auto bad = temp_dir() / "bad.xml";
   std::ofstream(bad) << "<scene version='3.0.0'><shape type='cube'><ref id='x'/></shape></scene>";
-  EXPECT_NE(run("render " + bad.string() + " -o " + exr.string()).status, 0);
+  EXPECT_NE(run_caustica("render " + bad.string() + " -o " + exr.string()).status, 0);
   std::ifstream in(exr);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(content, "previous");

@@ -93,13 +93,7 @@ TEST_P(BidirectionalAgreement, RegionMeansMatchPath) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, BidirectionalAgreement, testing::ValuesIn(kScenes),
-                         [](const testing::TestParamInfo<const char*>& info) {
-                           std::string s = info.param;
-                           for (char& ch : s)
-                             if (ch == '-') ch = '_';
-                           return s;
-                         });
+INSTANTIATE_TEST_SUITE_P(Scenes, BidirectionalAgreement, testing::ValuesIn(kScenes), test::scene_test_name);
 
 }  // namespace
 }  // namespace caustica

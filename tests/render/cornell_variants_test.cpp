@@ -75,13 +75,7 @@ TEST_P(CornellVariant, FiniteAndAgreesWithTheReference) {
       }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, CornellVariant, testing::ValuesIn(kScenes),
-                         [](const testing::TestParamInfo<const char*>& info) {
-                           std::string s = info.param;
-                           for (char& ch : s)
-                             if (ch == '-') ch = '_';
-                           return s;
-                         });
+INSTANTIATE_TEST_SUITE_P(Scenes, CornellVariant, testing::ValuesIn(kScenes), test::scene_test_name);
 
 }  // namespace
 }  // namespace caustica

@@ -25,4 +25,11 @@ std::string load_error(const std::string& xml, const std::string& name) {
   return "";
 }
 
+std::string scene_test_name(const testing::TestParamInfo<const char*>& info) {
+  std::string s = info.param;
+  for (char& c : s)
+    if (c == '-') c = '_';
+  return s;
+}
+
 }  // namespace caustica::test

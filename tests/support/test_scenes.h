@@ -1,5 +1,7 @@
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 
@@ -18,5 +20,8 @@ FilmBuffer render_scene(const Scene& scene, uint32_t spp, uint64_t seed = 0, int
 // The message of the SceneError (or other exception) loading `xml` throws,
 // or "" if it loads.
 std::string load_error(const std::string& xml, const std::string& name = "test.xml");
+
+// A test name for a scene parameter: "cornell-box-glass" -> "cornell_box_glass".
+std::string scene_test_name(const testing::TestParamInfo<const char*>& info);
 
 }  // namespace caustica::test
