@@ -35,11 +35,11 @@ std::string sky_scene(const std::string& integrator) {
 
 TEST(EnvironmentLight, DiffusePlaneUnderUniformSky) {
   const std::pair<const char*, uint32_t> integrators[] = {
-      {"<integrator type='path'/>", 4},
-      {"<integrator type='direct'/>", 4},
-      {"<integrator type='bdpt'/>", 4},
-      {"<integrator type='bdpt'><string name='mis' value='balance'/></integrator>", 4},
-      {"<integrator type='ptracer'/>", 64}};
+      {"<integrator type='path'/>", 64},
+      {"<integrator type='direct'/>", 64},
+      {"<integrator type='bdpt'/>", 64},
+      {"<integrator type='bdpt'><string name='mis' value='balance'/></integrator>", 64},
+      {"<integrator type='ptracer'/>", 1024}};
   const auto regions = test::grid_regions(16, 16, 4);
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(integrators) * regions.size())), kRuns - 1);
