@@ -89,7 +89,7 @@ class BidirectionalPathTracer final : public Integrator {
         if (k == 1 && settings_.hide_emitters) continue;
         const bool layer = k <= layers_;
         if (t == 1) {
-          const auto c = connect_to_camera(scene, light, s, sampler.next_2d());
+          const auto c = connect_to_camera(scene, light, s, sampler);
           if (!c) continue;
           const Color value =
               c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_);
@@ -101,6 +101,12 @@ class BidirectionalPathTracer final : public Integrator {
           if (layer) add(out, layer_channel(s, t), value);
         }
       }
+  }
+
+  std::string plan(const Scene& scene) const override {
+    return std::string("bdpt: every (s, t) strategy, weighed by the ") +
+           (heuristic_ == MisHeuristic::Power ? "power" : "balance") + " heuristic" +
+           (scene.features().caustic_paths ? "; caustics mostly by light tracing (t = 1)" : "");
   }
 
   std::string describe() const override {

@@ -21,6 +21,7 @@
 #include "core/render/integrator.h"
 #include "core/render/path_settings.h"
 #include "core/render/subpath.h"
+#include "core/scene/scene.h"
 
 namespace caustica {
 namespace {
@@ -39,10 +40,15 @@ class ParticleTracer final : public Integrator {
     thread_local std::vector<PathVertex> light;
     trace_light_subpath(scene, sampler, limits_, light);
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
-      if (const auto c = connect_to_camera(scene, light, s, sampler.next_2d())) splats.add(c->raster, c->value);
+      if (const auto c = connect_to_camera(scene, light, s, sampler)) splats.add(c->raster, c->value);
   }
 
   std::string describe() const override { return caustica::describe("ptracer", settings_); }
+
+  std::string plan(const Scene& scene) const override {
+    return std::string("ptracer: light paths joined to the camera") +
+           (scene.features().lobes & kDelta ? "; surfaces seen through delta lobes stay black" : "");
+  }
 
  private:
   PathSettings settings_;

@@ -28,6 +28,9 @@ struct WiSample {
 class Sensor : public Plugin {
  public:
   virtual Ray generate_ray(Vec2 raster, Vec2 u_lens) const = 0;
+  // Whether generate_ray and sample_Wi use their lens sample; a pinhole
+  // does not, and then none is drawn.
+  virtual bool has_lens() const { return false; }
   // Importance emitted along `ray` (which starts on the lens) and its raster position.
   virtual Color We(const Ray& ray, Vec2* raster) const = 0;
   virtual void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const = 0;

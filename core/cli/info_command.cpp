@@ -5,6 +5,7 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/cli/render_command.h"
+#include "core/registry/registry.h"
 #include "core/scene/scene_loader.h"
 
 namespace caustica {
@@ -18,11 +19,7 @@ void InfoCommand::add_to(CLI::App& app) {
 int InfoCommand::run() const {
   const auto scene = load_scene(scene_, parse_defines(defines_));
   std::map<std::string, int> shape_kinds;
-  uint32_t lobes = 0;
-  for (const auto& s : scene->shapes()) {
-    ++shape_kinds[s->kind()];
-    lobes |= s->bsdf()->lobes();
-  }
+  for (const auto& s : scene->shapes()) ++shape_kinds[s->kind()];
   std::printf("scene: %s\n", scene_.c_str());
   std::printf("film: %dx%d\n", scene->sensor().film()->width(), scene->sensor().film()->height());
   std::printf("integrator: %s\n", scene->integrator()->describe().c_str());
@@ -36,10 +33,14 @@ int InfoCommand::run() const {
   }
   std::printf("\nemitters: %zu (area: %d, delta: %d, environment: %d)\n", scene->emitters().size(), area, delta,
               infinite);
-  std::printf("bsdf lobes: %s%s%s\n", lobes & kDiffuse ? "diffuse " : "", lobes & kGlossy ? "glossy " : "",
-              lobes & kDelta ? "delta" : "");
   const Bounds3& b = scene->bounds();
   std::printf("bounds: (%g, %g, %g) - (%g, %g, %g)\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  std::printf("%s", describe(scene->features()).c_str());
+  std::printf("what each integrator does with it (default parameters):\n");
+  for (const std::string& name : Registry::instance().names("integrator")) {
+    const std::string plan = make_integrator(name)->plan(*scene);
+    if (!plan.empty()) std::printf("  %s\n", plan.c_str());
+  }
   return 0;
 }
 

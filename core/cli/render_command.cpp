@@ -123,6 +123,8 @@ int RenderCommand::run() const {
   const bool radiance = film.channels() == std::vector<std::string>{"R", "G", "B"};
   std::optional<FilmBuffer> aovs;
   if (radiance) aovs.emplace(film_settings.width(), film_settings.height(), standard_aov_channels());
+  const std::string plan = scene->integrator()->plan(*scene);
+  if (!quiet_ && !plan.empty()) std::printf("%s\n", plan.c_str());
   RenderProgress progress;
   RenderStats stats;
   {
@@ -133,6 +135,7 @@ int RenderCommand::run() const {
 
   const Image image = assemble_layers(film, aovs ? &*aovs : nullptr);
   const std::map<std::string, std::string> metadata = {{"caustica:scene", scene_},
+                                                       {"caustica:plan", plan},
                                                        {"caustica:integrator", scene->integrator()->describe()},
                                                        {"caustica:spp", std::to_string(stats.spp)},
                                                        {"caustica:seconds", std::to_string(stats.seconds)},

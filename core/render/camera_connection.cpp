@@ -5,8 +5,9 @@
 namespace caustica {
 
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<const PathVertex> light, int s,
-                                                  Vec2 u_lens) {
+                                                  Sampler& sampler) {
   const PathVertex& v = light[s - 1];
+  const Vec2 u_lens = scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f);
   if (v.environment || v.delta_light) return std::nullopt;
   const auto ws = scene.sensor().sample_Wi({v.p(), v.si.p_error, v.si.ng}, u_lens);
   if (!ws || !(ws->pdf > 0)) return std::nullopt;

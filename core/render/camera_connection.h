@@ -4,6 +4,7 @@
 #include <span>
 
 #include "core/render/path_vertex.h"
+#include "core/sampling/sampler.h"
 
 namespace caustica {
 
@@ -18,8 +19,9 @@ struct CameraConnection {
 
 // Connects light[s-1] to the camera: none when the camera cannot see it or
 // it sends nothing toward the camera. Delta-position lights and the
-// environment are never seen directly, as with camera rays.
+// environment are never seen directly, as with camera rays. The sampler
+// gives a lens sample only if the camera has a lens.
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<const PathVertex> light, int s,
-                                                  Vec2 u_lens);
+                                                  Sampler& sampler);
 
 }  // namespace caustica

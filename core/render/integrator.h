@@ -19,8 +19,17 @@ class Scene;
 // the camera land.
 class Integrator : public Plugin {
  public:
-  // Work that precedes the pixels (e.g. a photon pass).
+  // Work that precedes the pixels.
   virtual void prepare(const Scene&) {}
+  // Called before each pass over the pixels (the `pass`-th, from 0), e.g. to
+  // trace a progressive round of photons; `seed` is the render's.
+  virtual void begin_pass(const Scene&, uint32_t /*pass*/, uint64_t /*seed*/) {}
+  // The most samples per pixel one pass may hold: progressive methods that
+  // refine between passes ask for few.
+  virtual uint32_t max_pass_samples() const { return 16; }
+  // What it will do with this scene and what it skips as the scene does not
+  // need it, in a line or two; for `caustica info` and the render log.
+  virtual std::string plan(const Scene&) const { return ""; }
   // Names of the values sample() writes, in order; "R", "G", "B" for radiance.
   virtual std::vector<std::string> channels() const { return {"R", "G", "B"}; }
   // Whether sample() adds splats; the renderer then keeps a splat image.

@@ -45,7 +45,7 @@ CameraSample run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint6
   splats.set_source({pixel, index});
   const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
   const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
-  const Ray ray = scene.sensor().generate_ray(raster, sampler.next_2d());
+  const Ray ray = scene.sensor().generate_ray(raster, scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f));
   scene.integrator()->sample(scene, ray, sampler, values, splats);
   return {ray, fs.weight};
 }
@@ -133,7 +133,8 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
   if (progress) progress->pixel_samples_target = uint64_t(target) * film.width() * film.height();
   scene.integrator()->prepare(scene);
   if (scene.integrator()->splats()) film.enable_splats();
-  uint32_t done = 0;
+  const uint32_t max_pass = std::max(1u, scene.integrator()->max_pass_samples());
+  uint32_t done = 0, passes = 0;
   double last_pass = 0;
   // Small passes at first so progress and time budgets react quickly.
   uint32_t pass = 1;
@@ -145,12 +146,15 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
                : done < target && (!stopped() || done == 0)) {
     const uint32_t count = timed ? pass : std::min(pass, target - done);
     const double pass_start = elapsed();
-    arena.execute([&] { render_pass(scene, tiles, {done, count, options.seed}, threads, film, aovs, progress); });
+    arena.execute([&] {
+      scene.integrator()->begin_pass(scene, passes++, options.seed);
+      render_pass(scene, tiles, {done, count, options.seed}, threads, film, aovs, progress);
+    });
     done += count;
     film.set_splat_paths_per_pixel(done);
     last_pass = elapsed() - pass_start;
     last_count = count;
-    pass = std::min<uint32_t>(pass * 2, 16);
+    pass = std::min<uint32_t>(pass * 2, max_pass);
     if (progress) progress->rays = scene.rays_traced() - rays_before;
   }
 
@@ -166,6 +170,14 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
 }
 
 ReplayedSample replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed) {
+  // The integrator is set up as the render had it for the pass holding the sample.
+  scene.integrator()->prepare(scene);
+  const uint32_t max_pass = std::max(1u, scene.integrator()->max_pass_samples());
+  uint32_t pass = 0;
+  for (uint64_t first = 0, size = 1; first + size <= index;
+       first += size, size = std::min<uint64_t>(size * 2, max_pass))
+    ++pass;
+  scene.integrator()->begin_pass(scene, pass, seed);
   auto sampler = scene.sensor().sampler()->clone();
   ReplayedSample out{std::vector<float>(scene.integrator()->channels().size()), {}};
   run_sample(scene, *sampler, pixel, index, seed, out.values, out.splats);

@@ -14,6 +14,7 @@
 #include "core/lights/emitter.h"
 #include "core/render/integrator.h"
 #include "core/render/light_selection.h"
+#include "core/scene/scene_features.h"
 #include "core/shapes/shape.h"
 
 namespace caustica {
@@ -53,6 +54,9 @@ class Scene {
   const std::shared_ptr<ToneOperator>& tone_operator() const { return tone_operator_; }
   void set_tone_operator(std::shared_ptr<ToneOperator> op) { tone_operator_ = std::move(op); }
   const Bounds3& bounds() const { return bounds_; }
+  // What the scene calls for (analyze_scene), set by the loader.
+  const SceneFeatures& features() const { return features_; }
+  void set_features(SceneFeatures features) { features_ = std::move(features); }
   const std::string& source() const { return source_; }
 
  private:
@@ -64,6 +68,7 @@ class Scene {
   std::shared_ptr<ToneOperator> tone_operator_;
   std::string source_;
   Bounds3 bounds_;
+  SceneFeatures features_;
   std::unique_ptr<EmbreeScene> accel_;
   std::unique_ptr<LightSelection> lights_;
   mutable tbb::enumerable_thread_specific<uint64_t> rays_traced_{0};

@@ -68,6 +68,7 @@ class Instantiator {
   }
 
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
+  int textures = 0;                                // texture plugins built, for the scene features
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -100,6 +101,7 @@ class Instantiator {
     }
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
     if (node.tag == "emitter") emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
+    if (node.tag == "texture") ++textures;
     return {node.tag, plugin};
   }
 
@@ -178,6 +180,7 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
   auto scene = std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor),
                                        std::move(integrator), source);
   scene->set_tone_operator(std::move(tone_operator));
+  scene->set_features(analyze_scene(*scene, inst.textures > 0));
   return scene;
 }
 

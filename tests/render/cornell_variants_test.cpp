@@ -5,9 +5,10 @@
 // Agreement is judged per region of 4x4 pixels and channel by a z-test of
 // the difference of the means, at significance 1% Sidak-corrected over all
 // regions, channels and scenes. The per-sample variance comes from the
-// reference (64 times as many samples): caustic paths are rare, and a short
+// reference (16 times as many samples): caustic paths are rare, and a short
 // render's own variance estimate misses them and would understate its
-// error. Single dark pixels (self-intersection speckles) are caught by a
+// error. 1024 samples per pixel keep the sum of rare bright caustic samples
+// close enough to normal for a z-test. Single dark pixels (self-intersection speckles) are caught by a
 // one-sided per-pixel bound. Seeds are fixed.
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@
 namespace caustica {
 namespace {
 
-constexpr int kRes = 24, kRegion = 4, kSpp = 256;
+constexpr int kRes = 24, kRegion = 4, kSpp = 1024;
 const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
                                "cornell-box-glossy", "cornell-box-phong", "cornell-box-textured"};
 constexpr int kTests = int(std::size(kScenes)) * (kRes / kRegion) * (kRes / kRegion) * 3;

@@ -1,0 +1,100 @@
+#include "core/scene/scene_features.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/bsdf/bsdf.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+namespace {
+
+constexpr int kProbePoints = 256;
+
+// A low-discrepancy point set (the R2 sequence): the probes cover a
+// surface evenly without a random number generator.
+Vec2 r2_point(int i) {
+  constexpr double g = 1.32471795724474602596;  // the plastic number
+  const double x = 0.5 + (i + 1) / g, y = 0.5 + (i + 1) / (g * g);
+  return {float(x - std::floor(x)), float(y - std::floor(y))};
+}
+
+// Whether any light shines directly on some point of `shape`.
+bool lit_directly(const Scene& scene, const Shape& shape) {
+  for (int i = 0; i < kProbePoints; ++i) {
+    const PositionSample ps = shape.sample_position(r2_point(i));
+    if (!(ps.pdf > 0)) continue;
+    SurfaceInteraction si;
+    si.p = ps.p;
+    si.p_error = ps.p_error;
+    si.ng = ps.n;
+    for (const auto& emitter : scene.emitters()) {
+      const auto ls = emitter->sample_Li({ps.p, ps.p_error, ps.n}, r2_point(i + kProbePoints));
+      if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) continue;
+      const Ray shadow = ls->is_infinite ? si.spawn(ls->wi) : si.spawn_to(ls->p, ls->p_error, ls->n);
+      if (!scene.occluded(shadow)) return true;
+    }
+  }
+  return false;
+}
+
+std::string lobe_names(uint32_t lobes) {
+  std::string out;
+  const std::pair<uint32_t, const char*> names[] = {
+      {kDiffuseReflection, "diffuse reflection"}, {kDiffuseTransmission, "diffuse transmission"},
+      {kGlossyReflection, "glossy reflection"},   {kGlossyTransmission, "glossy transmission"},
+      {kDeltaReflection, "delta reflection"},     {kDeltaTransmission, "delta transmission"}};
+  for (const auto& [flag, name] : names)
+    if (lobes & flag) {
+      if (!out.empty()) out += ", ";
+      out += name;
+    }
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+SceneFeatures analyze_scene(const Scene& scene, bool textures) {
+  SceneFeatures f;
+  f.textures = textures;
+  f.pinhole = !scene.sensor().has_lens();
+  for (const auto& e : scene.emitters()) {
+    f.area_lights += e->is_area();
+    f.point_lights += e->is_delta();
+    f.environment_lights += e->is_infinite();
+  }
+  bool receiver = false;
+  int specular_shapes = 0;
+  const Shape* lit_specular = nullptr;
+  for (const auto& s : scene.shapes()) {
+    const uint32_t lobes = s->bsdf()->lobes();
+    f.lobes |= lobes;
+    receiver = receiver || (lobes & ~kDelta);
+    if (!(lobes & kDelta)) continue;
+    ++specular_shapes;
+    if (!lit_specular && lit_directly(scene, *s)) lit_specular = s.get();
+  }
+  if (specular_shapes == 0) {
+    f.caustics_reason = "no surface has a delta lobe (mirror or smooth glass)";
+  } else if (!lit_specular) {
+    f.caustics_reason = "no light reaches any of the " + std::to_string(specular_shapes) + " delta surfaces";
+  } else if (!receiver) {
+    f.caustics_reason = "no surface has a non-delta lobe to receive them";
+  } else {
+    f.caustic_paths = true;
+    f.caustics_reason = "a light reaches a " + lit_specular->kind() + " with a delta lobe";
+  }
+  return f;
+}
+
+std::string describe(const SceneFeatures& f) {
+  std::ostringstream out;
+  out << "bsdf lobes: " << lobe_names(f.lobes) << "\nlights: " << f.area_lights << " area, " << f.point_lights
+      << " point, " << f.environment_lights << " environment\ntextures: " << (f.textures ? "yes" : "no")
+      << "\ncamera: " << (f.pinhole ? "pinhole (no lens to sample)" : "lens")
+      << "\ncaustic paths: " << (f.caustic_paths ? "possible (" : "impossible (") << f.caustics_reason << ")\n";
+  return out.str();
+}
+
+}  // namespace caustica

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace caustica {
+
+class Scene;
+
+// What a scene calls for, summarised once at load, so that integrators do
+// only the work the scene can use and say what they skip.
+struct SceneFeatures {
+  uint32_t lobes = 0;  // BsdfLobe flags of every surface together
+  int area_lights = 0, point_lights = 0, environment_lights = 0;
+  bool textures = false;
+  bool pinhole = true;  // no lens to sample
+  // Caustic paths (light focused through mirrors or glass onto a diffuse or
+  // glossy surface, L S+ D): possible when some light reaches a surface with
+  // a delta lobe directly and some surface has a non-delta lobe to receive.
+  // Glossy surfaces, however smooth, count as non-specular.
+  bool caustic_paths = false;
+  std::string caustics_reason;  // why caustic paths are possible or not
+};
+
+// Looks at the scene's materials, lights and camera; whether a light
+// reaches a delta surface is decided by shadow rays from 256 points spread
+// over each such surface to every light.
+SceneFeatures analyze_scene(const Scene& scene, bool textures);
+
+// A few lines for `caustica info`.
+std::string describe(const SceneFeatures& features);
+
+}  // namespace caustica

@@ -1,0 +1,59 @@
+// The photon map's radius query against brute force, over random photons
+// (some in cells that share a hash bucket), and its independence of order.
+
+#include "core/render/photon_map.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace caustica {
+namespace {
+
+std::vector<Photon> random_photons(int n, uint32_t seed, float extent) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-extent, extent);
+  std::vector<Photon> photons(n);
+  for (int i = 0; i < n; ++i) {
+    photons[i].p = {u(rng), u(rng), u(rng)};
+    photons[i].depth = uint32_t(i);  // an id
+  }
+  return photons;
+}
+
+TEST(PhotonMap, RadiusQueryFindsExactlyThePhotonsWithinReach) {
+  // Few buckets for a wide spread of cells: many cells collide.
+  const auto photons = random_photons(2000, 1, 5);
+  const float radius = 0.4f;
+  const PhotonMap map(photons, radius);
+  EXPECT_EQ(map.size(), photons.size());
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(-5.5f, 5.5f);
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    std::vector<uint32_t> expected, found;
+    for (const Photon& ph : photons)
+      if (squared_length(ph.p - p) <= radius * radius) expected.push_back(ph.depth);
+    map.for_each_within(p, [&](const Photon& ph) { found.push_back(ph.depth); });
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected) << "query " << q;
+  }
+}
+
+TEST(PhotonMap, EmptyMapAndNegativeCoordinates) {
+  const PhotonMap empty(std::vector<Photon>{}, 1.0f);
+  int calls = 0;
+  empty.for_each_within({0, 0, 0}, [&](const Photon&) { ++calls; });
+  EXPECT_EQ(calls, 0);
+  std::vector<Photon> photons(2);
+  photons[0].p = {-0.05f, -0.05f, -0.05f};
+  photons[1].p = {0.05f, 0.05f, 0.05f};
+  const PhotonMap map(photons, 0.1f);
+  map.for_each_within({0, 0, 0}, [&](const Photon&) { ++calls; });
+  EXPECT_EQ(calls, 2);
+  EXPECT_THROW(PhotonMap(photons, 0.0f), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace caustica
