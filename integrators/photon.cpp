@@ -87,7 +87,8 @@ class PhotonIntegrator final : public RadianceIntegrator {
     rounds_ = 0;
   }
 
-  uint32_t max_pass_samples() const override { return uint32_t(samples_per_round_); }
+  // Without photons there is nothing to refine between passes.
+  uint32_t max_pass_samples() const override { return enabled_ ? uint32_t(samples_per_round_) : 16; }
 
   void begin_pass(const Scene& scene, uint32_t pass, uint64_t seed) override {
     rounds_ = pass + 1;
