@@ -52,20 +52,6 @@ const Recording& recording(const std::string& name) {
   return it->second;
 }
 
-RTCRay to_rtc(const Ray& ray) {
-  RTCRay r{};
-  r.org_x = ray.o.x;
-  r.org_y = ray.o.y;
-  r.org_z = ray.o.z;
-  r.dir_x = ray.d.x;
-  r.dir_y = ray.d.y;
-  r.dir_z = ray.d.z;
-  r.tnear = ray.t_min;
-  r.tfar = ray.t_max;
-  r.mask = ~0u;
-  return r;
-}
-
 void BM_Embree(benchmark::State& state, const std::string& name) {
   const Recording& rec = recording(name);
   const RTCScene scene = rec.scene->accel().rtc_scene();

@@ -5,8 +5,6 @@
 
 namespace caustica {
 
-namespace {
-
 RTCRay to_rtc(const Ray& ray) {
   RTCRay r{};
   r.org_x = ray.o.x;
@@ -21,8 +19,6 @@ RTCRay to_rtc(const Ray& ray) {
   r.flags = 0;
   return r;
 }
-
-}  // namespace
 
 EmbreeScene::EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes) {
   device_ = rtcNewDevice(nullptr);

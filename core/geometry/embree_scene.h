@@ -10,6 +10,9 @@
 
 namespace caustica {
 
+// A caustica ray as Embree takes it (all geometry masks, no flags).
+RTCRay to_rtc(const Ray& ray);
+
 // Ray queries over the scene's shapes through Embree.
 class EmbreeScene {
  public:
