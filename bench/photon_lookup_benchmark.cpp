@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "core/render/caustic_photons.h"
+#include "core/render/photon_tracing.h"
 #include "core/scene/scene_loader.h"
 
 namespace caustica {
@@ -17,7 +17,7 @@ const std::vector<Photon>& caustic_photons() {
   static const std::vector<Photon> photons = [] {
     const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "8"}});
-    return trace_caustic_photons(*scene, 1000000, 0, 1, PathSettings{});
+    return trace_photons(*scene, PhotonPaths::Caustic, 1000000, 0, 1, PathSettings{});
   }();
   return photons;
 }

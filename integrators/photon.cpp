@@ -27,9 +27,9 @@
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
-#include "core/render/caustic_photons.h"
 #include "core/render/path_settings.h"
 #include "core/render/path_tracing.h"
+#include "core/render/photon_tracing.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
 
@@ -93,7 +93,8 @@ class PhotonIntegrator final : public RadianceIntegrator {
   void begin_pass(const Scene& scene, uint32_t pass, uint64_t seed) override {
     rounds_ = pass + 1;
     if (!enabled_) return;
-    map_ = PhotonMap(trace_caustic_photons(scene, uint64_t(photons_), pass, seed, settings_), round_radius(pass));
+    map_ = PhotonMap(trace_photons(scene, PhotonPaths::Caustic, uint64_t(photons_), pass, seed, settings_),
+                     round_radius(pass));
     gather_.emplace(map_, uint64_t(photons_), settings_.max_depth);
   }
 

@@ -52,7 +52,8 @@ std::string replay_command(const std::string& scene, SampleId id, uint64_t seed)
 // The EXR's layers: the integrator's channels, then for radiance the
 // first-hit AOVs, the per-pixel variance of the estimate and the number of
 // samples each pixel received. Splatted light reaches a pixel from other
-// pixels' samples, so its variance is unknown there and the layer is left out.
+// pixels' samples, and progressive photon mapping keeps no samples, so their
+// variance is unknown and the layer is left out.
 Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
   Image image{film.width(), film.height(), film.channels(), film.resolve()};
   if (!aovs) return image;
@@ -61,7 +62,7 @@ Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
   const size_t na = aovs->channel_count(), nc = film.channel_count();
   std::vector<std::string> names = film.channels();
   for (const auto& c : aovs->channels()) names.push_back(c);
-  const bool variance_known = !film.has_splats();
+  const bool variance_known = !film.has_splats() && !film.has_image();
   if (variance_known)
     for (const char* c : {"variance.R", "variance.G", "variance.B"}) names.push_back(c);
   names.push_back("samples.Y");

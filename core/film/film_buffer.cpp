@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 #include "core/film/reconstruction_filter.h"
@@ -81,7 +82,13 @@ void FilmBuffer::record_dropped(const SplatList& list) {
   if (list.dropped() > 0) dropped_->record(list.first_dropped(), list.dropped());
 }
 
+void FilmBuffer::set_image(std::vector<float> pixels) {
+  if (pixels.size() != weighted_sum_.size()) throw std::invalid_argument("FilmBuffer::set_image: wrong size");
+  image_ = std::move(pixels);
+}
+
 std::vector<float> FilmBuffer::resolve() const {
+  if (!image_.empty()) return image_;
   std::vector<float> out(weighted_sum_.size(), 0);
   const size_t nc = channels_.size();
   for (size_t p = 0; p < weight_sum_.size(); ++p)

@@ -50,8 +50,14 @@ class FilmBuffer {
   // Light paths traced per pixel so far: the splat image is divided by it.
   void set_splat_paths_per_pixel(uint64_t n) { splat_paths_per_pixel_ = n; }
   bool has_splats() const { return !splat_sum_.empty(); }
+  // An image made elsewhere from state the integrator keeps per pixel
+  // (stochastic progressive photon mapping), pixel-interleaved like
+  // resolve(): resolve() returns it in place of the samples' means.
+  void set_image(std::vector<float> pixels);
+  bool has_image() const { return !image_.empty(); }
 
-  // The weighted mean of each channel plus the splat image, pixel-interleaved.
+  // The weighted mean of each channel plus the splat image (or the image
+  // set_image gave), pixel-interleaved.
   std::vector<float> resolve() const;
   // Per-pixel variance of the weighted mean of the beauty channels,
   // estimated from the samples as sum w^2 (x - mean)^2 / (sum w)^2 with the
@@ -75,6 +81,7 @@ class FilmBuffer {
   std::vector<uint32_t> count_;
   std::vector<double> splat_sum_;  // channels per pixel, allocated by the first splat
   uint64_t splat_paths_per_pixel_ = 0;
+  std::vector<float> image_;
   struct DropLog {
     std::atomic<uint64_t> count{0};
     std::mutex mutex;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/film/film_buffer.h"
 #include "core/film/splat_list.h"
 #include "core/geometry/ray.h"
 #include "core/registry/plugin.h"
@@ -27,6 +28,9 @@ class Integrator : public Plugin {
   // The most samples per pixel one pass may hold: progressive methods that
   // refine between passes ask for few.
   virtual uint32_t max_pass_samples() const { return 16; }
+  // Called once the passes are done: integrators that keep state per pixel
+  // rather than averaging samples put their image into the film here.
+  virtual void finish(const Scene&, FilmBuffer&) const {}
   // What it will do with this scene and what it skips as the scene does not
   // need it, in a line or two; for `caustica info` and the render log.
   virtual std::string plan(const Scene&) const { return ""; }

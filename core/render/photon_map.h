@@ -35,11 +35,16 @@ class PhotonMap {
   // Calls f(photon) for every photon within the radius of p.
   template <class F>
   void for_each_within(Vec3 p, F&& f) const {
+    for_each_within(p, radius_, f);
+  }
+  // The same within r, which must not exceed the map's radius.
+  template <class F>
+  void for_each_within(Vec3 p, float r, F&& f) const {
     if (photons_.empty()) return;
     const int cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
     uint32_t visited[27];
     int n_visited = 0;
-    const float r2 = radius_ * radius_;
+    const float r2 = r * r;
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {

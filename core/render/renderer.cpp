@@ -158,6 +158,7 @@ RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer&
     if (progress) progress->rays = scene.rays_traced() - rays_before;
   }
 
+  scene.integrator()->finish(scene, film);
   RenderStats stats;
   stats.seconds = elapsed();
   stats.spp = done;

@@ -1,4 +1,4 @@
-#include "core/render/caustic_photons.h"
+#include "core/render/photon_tracing.h"
 
 #include <tbb/parallel_for.h>
 
@@ -13,7 +13,8 @@ namespace {
 
 constexpr uint64_t kBlock = 1024;
 
-void trace_photon(const Scene& scene, Sampler& sampler, const PathSettings& settings, std::vector<Photon>& out) {
+void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
+                  std::vector<Photon>& out) {
   float u_select = sampler.next_1d();
   const Vec2 u_pos = sampler.next_2d(), u_dir = sampler.next_2d();
   const auto choice = scene.light_selection().sample(u_select);
@@ -34,7 +35,8 @@ void trace_photon(const Scene& scene, Sampler& sampler, const PathSettings& sett
     if (!within_depth) return;
     const float u_lobe = sampler.next_1d();
     const auto bs = bsdf.sample(-ray.d, u_lobe, sampler.next_2d());
-    if (!bs || !bs->is_delta()) return;  // past a non-delta bounce the path is no longer a caustic
+    if (!bs) return;
+    if (kind == PhotonPaths::Caustic && !bs->is_delta()) return;  // past a non-delta bounce, no caustic
     const Color weight = bs->f * (abs_dot(bs->wi, si->shading.n) / bs->pdf);
     beta *= weight;
     throughput *= weight;
@@ -50,8 +52,8 @@ void trace_photon(const Scene& scene, Sampler& sampler, const PathSettings& sett
 
 }  // namespace
 
-std::vector<Photon> trace_caustic_photons(const Scene& scene, uint64_t count, uint32_t round, uint64_t seed,
-                                          const PathSettings& settings) {
+std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint32_t round, uint64_t seed,
+                                  const PathSettings& settings) {
   const size_t blocks = size_t((count + kBlock - 1) / kBlock);
   std::vector<std::vector<Photon>> found(blocks);
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
@@ -59,7 +61,7 @@ std::vector<Photon> trace_caustic_photons(const Scene& scene, uint64_t count, ui
     for (uint64_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
       // Keyed apart from every pixel's camera samples.
       sampler->start_sample({-1, int(round)}, i, seed);
-      trace_photon(scene, *sampler, settings, found[b]);
+      trace_photon(scene, kind, *sampler, settings, found[b]);
     }
   });
   std::vector<Photon> photons;

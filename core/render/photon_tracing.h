@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/render/path_settings.h"
+#include "core/render/photon_map.h"
+
+namespace caustica {
+
+class Scene;
+
+// Which photons a photon pass keeps.
+enum class PhotonPaths {
+  // Caustics, L S+ D: kept where they land on a surface with a non-delta
+  // lobe after one or more delta bounces and nothing else; the photon stops
+  // at its first non-delta bounce.
+  Caustic,
+  // All indirect light, L (S|D)+ D: kept at every surface with a non-delta
+  // lobe after the first bounce (direct light is left to shadow rays).
+  Indirect,
+};
+
+// Traces `count` photons from the emitters (chosen by power) and keeps the
+// kind asked for. Photon i of round `round` draws its random numbers from
+// (seed, round, i) and blocks of photons are joined in order, so the result
+// is the same for any thread count. Photons whose paths could not reach the
+// camera within settings.max_depth are not kept.
+std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint32_t round, uint64_t seed,
+                                  const PathSettings& settings);
+
+}  // namespace caustica
