@@ -82,8 +82,6 @@ class StochasticProgressivePhotonMapping final : public Integrator {
     iterations_ = pass + 1;
   }
 
-  bool splats() const override { return false; }
-
   void sample(const Scene&, const Ray&, Sampler&, std::span<float> out, SplatList&) const override {
     std::fill(out.begin(), out.end(), 0.0f);
   }
