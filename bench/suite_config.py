@@ -8,7 +8,7 @@ so the list may run ahead of the binary.
 from dataclasses import dataclass
 
 # In plot and table order.
-INTEGRATORS = ["path", "bdpt", "ptracer", "photon", "sppm", "direct"]
+INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=10000", "direct"]
 
 # The Cornell-box family: diffuse, glass (caustics), mirror, glossy metal.
 SCENES = ["cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"]
