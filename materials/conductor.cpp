@@ -21,24 +21,20 @@
 //       <rgb name="k" value="3.9, 2.45, 2.14"/>
 //   </bsdf>
 
-#include "core/bsdf/bsdf.h"
 #include "core/bsdf/conductor_data.h"
+#include "core/bsdf/delta_bsdf.h"
 #include "core/bsdf/fresnel.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
 
-class ConductorBsdf final : public Bsdf {
+class ConductorBsdf final : public DeltaBsdf {
  public:
   explicit ConductorBsdf(const Properties& props)
       : ior_(conductor_ior(props)), specular_reflectance_(props.get_texture("specular_reflectance")) {}
 
   uint32_t lobes() const override { return kDeltaReflection; }
-
-  // A delta lobe: no density in any direction.
-  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
-  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2) const override {
     if (!(cos_theta(wo) > 0)) return std::nullopt;

@@ -32,56 +32,50 @@
 
 #include <cmath>
 
-#include "core/bsdf/bsdf.h"
+#include "core/bsdf/delta_bsdf.h"
+#include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
 
-class DielectricBsdf final : public Bsdf {
+class DielectricBsdf final : public DeltaBsdf {
  public:
-  explicit DielectricBsdf(const Properties& props)
-      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
-        reflectance_(props.get_texture("specular_reflectance")),
-        transmittance_(props.get_texture("specular_transmittance")) {}
+  explicit DielectricBsdf(const Properties& props) : interface_(props) {}
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
-
-  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
-  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
     if (wo.z == 0) return std::nullopt;
     const DielectricFresnel fr = fresnel(wo.z);
     if (u_lobe < fr.F) {
       const Vec3 wi(-wo.x, -wo.y, wo.z);
-      return BsdfSample{wi, reflectance_->eval(ctx.uv) * (fr.F / std::abs(wi.z)), fr.F, kDeltaReflection, 1};
+      return BsdfSample{wi, interface_.reflectance->eval(ctx.uv) * (fr.F / std::abs(wi.z)), fr.F, kDeltaReflection, 1};
     }
     const Vec3 wi = refract(wo, Vec3(0, 0, 1), fr.cos_t, fr.eta_ti);
     if (wi.z * wo.z >= 0) return std::nullopt;
     // eta_ti^2 = (index on wo's side / index on wi's side)^2.
     const float scale = ctx.mode == TransportMode::Radiance ? fr.eta_ti * fr.eta_ti : 1.0f;
     const float T = 1 - fr.F;
-    return BsdfSample{wi, transmittance_->eval(ctx.uv) * (T * scale / std::abs(wi.z)), T, kDeltaTransmission,
+    return BsdfSample{wi, interface_.transmittance->eval(ctx.uv) * (T * scale / std::abs(wi.z)), T, kDeltaTransmission,
                       fr.eta_it};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     const float F = fresnel(wo.z).F;
-    return reflectance_->eval(ctx.uv) * F + transmittance_->eval(ctx.uv) * (1 - F);
+    return interface_.reflectance->eval(ctx.uv) * F + interface_.transmittance->eval(ctx.uv) * (1 - F);
   }
 
  private:
   // Fresnel at the macro surface; an index-matched interface is exactly
   // transparent (the general formula leaves rounding residue there).
   DielectricFresnel fresnel(float cos_o) const {
-    if (eta_ == 1) return {0, -cos_o, 1, 1};
-    return fresnel_dielectric(cos_o, eta_);
+    if (interface_.eta == 1) return {0, -cos_o, 1, 1};
+    return fresnel_dielectric(cos_o, interface_.eta);
   }
 
-  float eta_;  // int_ior / ext_ior
-  std::shared_ptr<Texture> reflectance_, transmittance_;
+  DielectricInterface interface_;
 };
 
 }  // namespace

@@ -47,6 +47,7 @@
 #include <stdexcept>
 
 #include "core/bsdf/bsdf.h"
+#include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/microfacet_params.h"
 #include "core/registry/properties.h"
@@ -57,11 +58,7 @@ namespace {
 class RoughDielectricBsdf final : public Bsdf {
  public:
   explicit RoughDielectricBsdf(const Properties& props)
-      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
-        distribution_(microfacet_from(props)),
-        reflectance_(props.get_texture("specular_reflectance")),
-        transmittance_(props.get_texture("specular_transmittance")),
-        sample_visible_(props.get_bool("sample_visible")) {}
+      : interface_(props), distribution_(microfacet_from(props)), sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
@@ -80,13 +77,13 @@ class RoughDielectricBsdf final : public Bsdf {
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
     if (wo.z == 0) return std::nullopt;
     if (index_matched())
-      return BsdfSample{-wo, transmittance_->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
+      return BsdfSample{-wo, interface_.transmittance->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
     // Facets are seen from wo's side; the distribution is symmetric under
     // m -> (-m.x, -m.y, m.z), so wo inside samples as -wo outside.
     const Vec3 m = sample_visible_ ? distribution_.sample(wo.z > 0 ? wo : -wo, u) : distribution_.sample_D(u);
     const float wo_m = dot(wo, m);
     if (wo_m * wo.z <= 0) return std::nullopt;  // a back-facing facet (Beckmann samples those)
-    const DielectricFresnel fr = fresnel_dielectric(wo_m, eta_);
+    const DielectricFresnel fr = fresnel_dielectric(wo_m, interface_.eta);
     Vec3 wi;
     uint32_t lobe;
     if (u_lobe < fr.F) {
@@ -104,8 +101,8 @@ class RoughDielectricBsdf final : public Bsdf {
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, eta_).F;
-    return reflectance_->eval(ctx.uv) * F + transmittance_->eval(ctx.uv) * (1 - F);
+    const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, interface_.eta).F;
+    return interface_.reflectance->eval(ctx.uv) * F + interface_.transmittance->eval(ctx.uv) * (1 - F);
   }
 
  private:
@@ -114,7 +111,7 @@ class RoughDielectricBsdf final : public Bsdf {
     float pdf = 0;
   };
 
-  bool index_matched() const { return eta_ == 1; }
+  bool index_matched() const { return interface_.eta == 1; }
 
   // The facet normal that turns wo into wi, by reflection or refraction,
   // oriented to the outside; none where no facet seen from both directions does.
@@ -122,7 +119,7 @@ class RoughDielectricBsdf final : public Bsdf {
     if (wo.z == 0 || wi.z == 0 || index_matched()) return std::nullopt;
     const bool reflection = wo.z * wi.z > 0;
     // For refraction eta_o wo + eta_i wi is along the facet normal (Snell).
-    Vec3 m = reflection ? wo + wi : wo + wi * (wo.z > 0 ? eta_ : 1 / eta_);
+    Vec3 m = reflection ? wo + wi : wo + wi * (wo.z > 0 ? interface_.eta : 1 / interface_.eta);
     const float len2 = squared_length(m);
     if (!(len2 > 0)) return std::nullopt;
     m = m / std::sqrt(len2);
@@ -138,28 +135,27 @@ class RoughDielectricBsdf final : public Bsdf {
     // Density of the facet normal as sampled from wo's side.
     const float pdf_m = sample_visible_ ? distribution_.pdf(wo.z > 0 ? wo : -wo, m) : distribution_.pdf_D(m);
     if (!(D > 0) || !(pdf_m > 0)) return {};
-    const float F = fresnel_dielectric(wo_m, eta_).F;
+    const float F = fresnel_dielectric(wo_m, interface_.eta).F;
     const float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
     if (wo.z * wi.z > 0) {
       // Jacobian of the reflected direction: d(omega_m) / d(omega_i) = 1 / (4 |wi.m|).
       const float f = F * D * G / (4 * cos_o * cos_i);
-      return {reflectance_->eval(ctx.uv) * f, F * pdf_m / (4 * std::abs(wo_m))};
+      return {interface_.reflectance->eval(ctx.uv) * f, F * pdf_m / (4 * std::abs(wo_m))};
     }
     if (F >= 1) return {};
-    const float eta = wo.z > 0 ? eta_ : 1 / eta_;  // index on wi's side over wo's
+    const float eta = wo.z > 0 ? interface_.eta : 1 / interface_.eta;  // index on wi's side over wo's
     const float denom = wo_m + eta * wi_m;
     // Jacobian of the refracted direction: eta^2 |wi.m| / (wo.m + eta wi.m)^2.
     const float jacobian = eta * eta * std::abs(wi_m) / (denom * denom);
     const float scale = ctx.mode == TransportMode::Radiance ? 1 : eta * eta;
     const float f = (1 - F) * D * G * std::abs(wo_m * wi_m) * scale / (cos_o * cos_i * denom * denom);
-    const Evaluation e{transmittance_->eval(ctx.uv) * f, (1 - F) * pdf_m * jacobian};
+    const Evaluation e{interface_.transmittance->eval(ctx.uv) * f, (1 - F) * pdf_m * jacobian};
     if (!e.f.is_finite() || !std::isfinite(e.pdf)) return {};
     return e;
   }
 
-  float eta_;  // int_ior / ext_ior
+  DielectricInterface interface_;
   MicrofacetDistribution distribution_;
-  std::shared_ptr<Texture> reflectance_, transmittance_;
   bool sample_visible_;
 };
 

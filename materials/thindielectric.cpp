@@ -25,51 +25,46 @@
 
 #include <cmath>
 
-#include "core/bsdf/bsdf.h"
+#include "core/bsdf/delta_bsdf.h"
+#include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 namespace {
 
-class ThinDielectricBsdf final : public Bsdf {
+class ThinDielectricBsdf final : public DeltaBsdf {
  public:
-  explicit ThinDielectricBsdf(const Properties& props)
-      : eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
-        reflectance_(props.get_texture("specular_reflectance")),
-        transmittance_(props.get_texture("specular_transmittance")) {}
+  explicit ThinDielectricBsdf(const Properties& props) : interface_(props) {}
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
-
-  Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }
-  float pdf(const BsdfContext&, Vec3, Vec3) const override { return 0; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
     if (wo.z == 0) return std::nullopt;
     const float R = reflectance(std::abs(wo.z)), T = 1 - R;
     const float inv_cos = 1 / std::abs(wo.z);  // |wi.z| = |wo.z| for both lobes
     if (u_lobe < R)
-      return BsdfSample{Vec3(-wo.x, -wo.y, wo.z), reflectance_->eval(ctx.uv) * (R * inv_cos), R, kDeltaReflection, 1};
-    return BsdfSample{-wo, transmittance_->eval(ctx.uv) * (T * inv_cos), T, kDeltaTransmission, 1};
+      return BsdfSample{Vec3(-wo.x, -wo.y, wo.z), interface_.reflectance->eval(ctx.uv) * (R * inv_cos), R,
+                        kDeltaReflection, 1};
+    return BsdfSample{-wo, interface_.transmittance->eval(ctx.uv) * (T * inv_cos), T, kDeltaTransmission, 1};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     const float R = reflectance(std::abs(wo.z));
-    return reflectance_->eval(ctx.uv) * R + transmittance_->eval(ctx.uv) * (1 - R);
+    return interface_.reflectance->eval(ctx.uv) * R + interface_.transmittance->eval(ctx.uv) * (1 - R);
   }
 
  private:
   // R' of the sheet for light arriving at cos_o > 0 from outside.
   float reflectance(float cos_o) const {
-    if (eta_ == 1) return 0;  // index-matched: exactly transparent
-    const float R = fresnel_dielectric(cos_o, eta_).F;
+    if (interface_.eta == 1) return 0;  // index-matched: exactly transparent
+    const float R = fresnel_dielectric(cos_o, interface_.eta).F;
     // R + T^2 R / (1 - R^2) with T = 1 - R, written so that R = 1 (total
     // internal reflection at the first face, for eta < 1) stays finite.
     return 2 * R / (1 + R);
   }
 
-  float eta_;  // int_ior / ext_ior
-  std::shared_ptr<Texture> reflectance_, transmittance_;
+  DielectricInterface interface_;
 };
 
 }  // namespace
