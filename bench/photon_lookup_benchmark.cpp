@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "core/render/photon_tracing.h"
+#include "integrators/photon/photon_tracing.h"
 #include "core/scene/scene_loader.h"
 
 namespace caustica {

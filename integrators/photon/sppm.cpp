@@ -34,7 +34,7 @@
 #include "core/render/direct_light.h"
 #include "core/render/integrator.h"
 #include "core/render/path_settings.h"
-#include "core/render/photon_tracing.h"
+#include "integrators/photon/photon_tracing.h"
 #include "core/scene/scene.h"
 
 namespace caustica {

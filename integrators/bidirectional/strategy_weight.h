@@ -2,7 +2,7 @@
 
 #include <span>
 
-#include "core/render/path_vertex.h"
+#include "integrators/bidirectional/path_vertex.h"
 
 namespace caustica {
 

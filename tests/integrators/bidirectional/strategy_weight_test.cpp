@@ -9,7 +9,7 @@
 // Both are checked to single-precision accuracy; the scenes cover area,
 // point and environment lights and diffuse, glossy and delta surfaces.
 
-#include "core/render/strategy_weight.h"
+#include "integrators/bidirectional/strategy_weight.h"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +18,8 @@
 #include <cstdio>
 
 #include "core/registry/properties.h"
-#include "core/render/path_density.h"
-#include "core/render/subpath.h"
+#include "integrators/bidirectional/path_density.h"
+#include "integrators/bidirectional/subpath.h"
 #include "core/scene/scene_loader.h"
 #include "tests/support/test_scenes.h"
 

@@ -1,4 +1,4 @@
-#include "core/render/photon_tracing.h"
+#include "integrators/photon/photon_tracing.h"
 
 #include <tbb/parallel_for.h>
 

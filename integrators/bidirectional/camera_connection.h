@@ -3,7 +3,7 @@
 #include <optional>
 #include <span>
 
-#include "core/render/path_vertex.h"
+#include "integrators/bidirectional/path_vertex.h"
 #include "core/sampling/sampler.h"
 
 namespace caustica {

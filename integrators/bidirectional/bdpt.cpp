@@ -24,12 +24,12 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "core/render/camera_connection.h"
+#include "integrators/bidirectional/camera_connection.h"
 #include "core/render/integrator.h"
-#include "core/render/path_density.h"
+#include "integrators/bidirectional/path_density.h"
 #include "core/render/path_settings.h"
-#include "core/render/strategy_weight.h"
-#include "core/render/subpath.h"
+#include "integrators/bidirectional/strategy_weight.h"
+#include "integrators/bidirectional/subpath.h"
 #include "core/scene/scene.h"
 
 namespace caustica {

@@ -1,8 +1,8 @@
-#include "core/render/subpath.h"
+#include "integrators/bidirectional/subpath.h"
 
 #include <algorithm>
 
-#include "core/render/path_density.h"
+#include "integrators/bidirectional/path_density.h"
 #include "core/scene/scene.h"
 
 namespace caustica {

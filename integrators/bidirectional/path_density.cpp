@@ -1,4 +1,4 @@
-#include "core/render/path_density.h"
+#include "integrators/bidirectional/path_density.h"
 
 #include <cmath>
 #include <stdexcept>

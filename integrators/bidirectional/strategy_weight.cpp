@@ -1,6 +1,6 @@
-#include "core/render/strategy_weight.h"
+#include "integrators/bidirectional/strategy_weight.h"
 
-#include "core/render/path_density.h"
+#include "integrators/bidirectional/path_density.h"
 
 namespace caustica {
 

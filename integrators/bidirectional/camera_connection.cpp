@@ -1,4 +1,4 @@
-#include "core/render/camera_connection.h"
+#include "integrators/bidirectional/camera_connection.h"
 
 #include "core/scene/scene.h"
 

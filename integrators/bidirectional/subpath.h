@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/geometry/ray.h"
-#include "core/render/path_vertex.h"
+#include "integrators/bidirectional/path_vertex.h"
 #include "core/sampling/sampler.h"
 
 namespace caustica {

@@ -1,7 +1,7 @@
 // photon: path tracing for all light except caustics (light focused through
 // mirrors or smooth glass onto a non-delta surface, L S+ D), which come
 // from a caustic photon map instead; the path tracer leaves exactly those
-// paths to it (core/render/path_tracing.h), so nothing is counted twice.
+// paths to it (integrators/path/path_tracing.h), so nothing is counted twice.
 // Progressive (Knaus and Zwicker 2011): before every pass of
 // samples_per_round samples per pixel, a new round of photons is traced and
 // the gather radius shrinks as r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), so
@@ -28,8 +28,8 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
-#include "core/render/path_tracing.h"
-#include "core/render/photon_tracing.h"
+#include "integrators/path/path_tracing.h"
+#include "integrators/photon/photon_tracing.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
 

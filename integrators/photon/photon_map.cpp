@@ -1,4 +1,4 @@
-#include "core/render/photon_map.h"
+#include "integrators/photon/photon_map.h"
 
 #include <bit>
 #include <stdexcept>

@@ -1,7 +1,7 @@
 // The photon map's radius query against brute force, over random photons
 // (some in cells that share a hash bucket), and its independence of order.
 
-#include "core/render/photon_map.h"
+#include "integrators/photon/photon_map.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/render/path_vertex.h"
+#include "integrators/bidirectional/path_vertex.h"
 
 namespace caustica {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/render/path_settings.h"
-#include "core/render/photon_map.h"
+#include "integrators/photon/photon_map.h"
 
 namespace caustica {
 

@@ -1,4 +1,4 @@
-#include "core/render/path_tracing.h"
+#include "integrators/path/path_tracing.h"
 
 #include <algorithm>
 

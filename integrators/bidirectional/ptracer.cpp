@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "core/render/camera_connection.h"
+#include "integrators/bidirectional/camera_connection.h"
 #include "core/render/integrator.h"
 #include "core/render/path_settings.h"
-#include "core/render/subpath.h"
+#include "integrators/bidirectional/subpath.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
