@@ -7,8 +7,8 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "integrators/photon/photon_tracing.h"
 #include "core/scene/scene_loader.h"
+#include "integrators/photon/photon_tracing.h"
 
 namespace caustica {
 namespace {

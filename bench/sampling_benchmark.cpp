@@ -18,7 +18,7 @@ void BM_StartSample(benchmark::State& state) {
   auto sampler = independent_sampler();
   uint64_t i = 0;
   for (auto _ : state) {
-    sampler->start_sample({int(i & 511), int(i >> 9 & 511)}, i, 0);
+    sampler->start_sample(SampleKey::camera({int(i & 511), int(i >> 9 & 511)}), i, 0);
     benchmark::DoNotOptimize(sampler->next_1d());
     ++i;
   }
@@ -27,14 +27,14 @@ BENCHMARK(BM_StartSample);
 
 void BM_Next2D(benchmark::State& state) {
   auto sampler = independent_sampler();
-  sampler->start_sample({0, 0}, 0, 0);
+  sampler->start_sample(SampleKey::camera({0, 0}), 0, 0);
   for (auto _ : state) benchmark::DoNotOptimize(sampler->next_2d());
 }
 BENCHMARK(BM_Next2D);
 
 void BM_CosineHemisphere(benchmark::State& state) {
   auto sampler = independent_sampler();
-  sampler->start_sample({0, 0}, 0, 0);
+  sampler->start_sample(SampleKey::camera({0, 0}), 0, 0);
   for (auto _ : state) benchmark::DoNotOptimize(square_to_cosine_hemisphere(sampler->next_2d()));
 }
 BENCHMARK(BM_CosineHemisphere);

@@ -21,10 +21,9 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
   return f * ls->Li * (weight / pdf_light);
 }
 
-float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const SurfaceInteraction& from, Vec3 wi,
+float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,
                              float bsdf_pdf, const SurfaceInteraction& on_light, float n_light, float n_bsdf) {
-  const ReferencePoint ref{from.p, from.p_error, from.ng};
-  const float pdf_light = scene.light_selection().pmf(&emitter) * emitter.pdf_Li(ref, wi, on_light);
+  const float pdf_light = scene.light_selection().pmf(&emitter) * emitter.pdf_Li(from, wi, on_light);
   return power_heuristic(n_bsdf, bsdf_pdf, n_light, pdf_light);
 }
 

@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "core/render/aov_evaluator.h"
+#include "core/render/camera_sample.h"
 
 namespace caustica {
 
@@ -33,21 +34,13 @@ const AovEvaluator& standard_aovs() {
   return evaluator;
 }
 
-struct CameraSample {
-  Ray ray;
-  float weight;
-};
-
 // Everything one sample needs; `values` is scratch space of channel size.
 CameraSample run_sample(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed,
                         std::span<float> values, SplatList& splats) {
-  sampler.start_sample(pixel, index, seed);
   splats.set_source({pixel, index});
-  const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
-  const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
-  const Ray ray = scene.sensor().generate_ray(raster, scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f));
-  scene.integrator()->sample(scene, ray, sampler, values, splats);
-  return {ray, fs.weight};
+  const CameraSample cs = sample_camera_ray(scene, sampler, pixel, index, seed);
+  scene.integrator()->sample(scene, cs.ray, sampler, values, splats);
+  return cs;
 }
 
 struct ThreadState {

@@ -1,5 +1,5 @@
-// independent: uniform random numbers from PCG32, keyed by (seed, pixel,
-// sample index) and skipped ahead to the sample, so every sample can be
+// independent: uniform random numbers from PCG32, keyed by (seed, stream,
+// key, sample index) and skipped ahead to the sample, so every sample can be
 // reproduced on its own.
 //
 // Parameters
@@ -26,9 +26,12 @@ class IndependentSampler final : public Sampler {
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
 
-  void start_sample(Vec2i pixel, uint64_t sample_index, uint64_t seed) override {
-    const uint64_t pixel_key = (uint64_t(uint32_t(pixel.y)) << 32) | uint32_t(pixel.x);
-    rng_.seed(mix_bits(pixel_key ^ mix_bits(seed + uint64_t(seed_))), mix_bits(pixel_key + 0x9e3779b97f4a7c15ULL));
+  void start_sample(SampleKey key, uint64_t sample_index, uint64_t seed) override {
+    // Camera pixels keep the key as it is; other streams are hashed apart from them.
+    const uint64_t k = key.stream == SampleStream::CameraPixel
+                           ? key.key
+                           : mix_bits(key.key ^ mix_bits(uint64_t(key.stream) * 0xd1b54a32d192ed03ULL));
+    rng_.seed(mix_bits(k ^ mix_bits(seed + uint64_t(seed_))), mix_bits(k + 0x9e3779b97f4a7c15ULL));
     rng_.advance(sample_index * kDimensionsPerSample);
   }
 

@@ -24,13 +24,14 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "integrators/bidirectional/camera_connection.h"
 #include "core/render/integrator.h"
-#include "integrators/bidirectional/path_density.h"
 #include "core/render/path_settings.h"
+#include "core/scene/scene.h"
+#include "core/transport/emission.h"
+#include "integrators/bidirectional/camera_connection.h"
+#include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/strategy_weight.h"
 #include "integrators/bidirectional/subpath.h"
-#include "core/scene/scene.h"
 
 namespace caustica {
 namespace {
@@ -53,8 +54,6 @@ class BidirectionalPathTracer final : public Integrator {
  public:
   explicit BidirectionalPathTracer(const Properties& props)
       : settings_(read_path_settings(props)),
-        camera_limits_(camera_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)),
-        light_limits_(light_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)),
         heuristic_(read_heuristic(props)),
         layers_(int(props.get_int("strategy_layers"))) {
     if (layers_ < 0 || layers_ > 12) throw props.error("strategy_layers", "must be between 0 and 12");
@@ -77,9 +76,9 @@ class BidirectionalPathTracer final : public Integrator {
               SplatList& splats) const override {
     std::fill(out.begin(), out.end(), 0.0f);
     thread_local std::vector<PathVertex> camera, light;
-    trace_camera_subpath(scene, ray, sampler, camera_limits_, camera);
+    trace_camera_subpath(scene, ray, sampler, settings_, camera);
     compute_densities(scene, camera);
-    trace_light_subpath(scene, sampler, light_limits_, light);
+    trace_light_subpath(scene, sampler, settings_, light);
     compute_densities(scene, light);
 
     for (int t = 1; t <= int(camera.size()); ++t)
@@ -167,28 +166,25 @@ class BidirectionalPathTracer final : public Integrator {
   }
 
   // Strategy (0, t): the camera subpath's last vertex is on an emitter.
+  // Each environment emitter is a light of its own, weighed on its own.
   Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t) const {
     PathVertex& cv = camera[t - 1];
     const std::span<const PathVertex> camera_part = std::span(camera).first(t);
-    if (!cv.environment) {
-      if (!cv.emitter) return {};
-      const Color Le = cv.emitter->L(cv.si, direction_to(cv, camera[t - 2]));
-      if (Le.is_black()) return {};
-      return cv.beta * Le * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
-    }
-    // Each environment emitter is a light of its own, weighed on its own.
+    // The strategy weight takes the place of the MIS weight against next-event estimation.
+    const Arrival unweighted;
     Color sum;
-    for (const Emitter* env : scene.infinite_emitters()) {
-      const Color Le = env->Le_infinite(cv.w_env);
-      if (Le.is_black()) continue;
-      cv.emitter = env;
+    const auto add = [&](const Emitter& emitter, Color Le, float) {
+      cv.emitter = &emitter;
       sum += cv.beta * Le * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
-    }
+    };
+    if (cv.environment)
+      emission_from_environment(scene, cv.w_env, unweighted, {}, add);
+    else if (cv.emitter)
+      emission_at_surface(scene, cv.si, direction_to(cv, camera[t - 2]), unweighted, {}, add);
     return sum;
   }
 
   PathSettings settings_;
-  SubpathLimits camera_limits_, light_limits_;
   MisHeuristic heuristic_;
   int layers_;
 };

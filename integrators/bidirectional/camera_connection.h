@@ -3,8 +3,8 @@
 #include <optional>
 #include <span>
 
-#include "integrators/bidirectional/path_vertex.h"
 #include "core/sampling/sampler.h"
+#include "integrators/bidirectional/path_vertex.h"
 
 namespace caustica {
 

@@ -17,20 +17,18 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "integrators/bidirectional/camera_connection.h"
 #include "core/render/integrator.h"
 #include "core/render/path_settings.h"
-#include "integrators/bidirectional/subpath.h"
 #include "core/scene/scene.h"
+#include "integrators/bidirectional/camera_connection.h"
+#include "integrators/bidirectional/subpath.h"
 
 namespace caustica {
 namespace {
 
 class ParticleTracer final : public Integrator {
  public:
-  explicit ParticleTracer(const Properties& props)
-      : settings_(read_path_settings(props)),
-        limits_(light_subpath_limits(settings_.max_depth, settings_.rr_depth, settings_.rr_max_survival)) {}
+  explicit ParticleTracer(const Properties& props) : settings_(read_path_settings(props)) {}
 
   bool splats() const override { return true; }
 
@@ -38,7 +36,7 @@ class ParticleTracer final : public Integrator {
               SplatList& splats) const override {
     std::fill(out.begin(), out.end(), 0.0f);
     thread_local std::vector<PathVertex> light;
-    trace_light_subpath(scene, sampler, limits_, light);
+    trace_light_subpath(scene, sampler, settings_, light);
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
       if (const auto c = connect_to_camera(scene, light, s, sampler)) splats.add(c->raster, c->value);
   }
@@ -52,7 +50,6 @@ class ParticleTracer final : public Integrator {
 
  private:
   PathSettings settings_;
-  SubpathLimits limits_;
 };
 
 }  // namespace

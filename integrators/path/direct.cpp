@@ -15,6 +15,8 @@
 #include "core/render/direct_light.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
+#include "core/transport/emission.h"
+#include "core/transport/random_walk.h"
 
 namespace caustica {
 namespace {
@@ -24,6 +26,25 @@ int64_t count(const Properties& props, const char* name) {
   if (n < 0) throw props.error(name, "must not be negative");
   return n;
 }
+
+class DirectIntegrator;
+
+// The camera ray's one vertex: its emission, then emitter samples and BSDF
+// samples, each BSDF sample looking for emission one segment further.
+class DirectLight {
+ public:
+  DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings);
+  WalkAction at_vertex(const WalkVertex& v);
+  void escaped(const WalkEscape& e);
+  WalkAction scattered(const BsdfSample&) { return WalkAction::Stop; }
+
+  Color L;
+
+ private:
+  const Scene& scene_;
+  Sampler& sampler_;
+  const DirectIntegrator& settings_;
+};
 
 class DirectIntegrator final : public RadianceIntegrator {
  public:
@@ -36,48 +57,9 @@ class DirectIntegrator final : public RadianceIntegrator {
   }
 
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    const auto si = scene.intersect(ray);
-    Color L;
-    if (!si) {
-      if (!hide_emitters_)
-        for (const Emitter* env : scene.infinite_emitters()) L += env->Le_infinite(ray.d);
-      return L;
-    }
-    if (const Emitter* e = si->shape->emitter(); e && !hide_emitters_) L += e->L(*si, -ray.d);
-
-    const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, TransportMode::Radiance);
-    const Vec3 wo = -ray.d;
-    const float nl = float(emitter_samples_), nb = float(bsdf_samples_);
-    if (bsdf.lobes() & ~kDelta)
-      for (int64_t i = 0; i < emitter_samples_; ++i) {
-        const float u_select = sampler.next_1d();
-        const Vec2 u_light = sampler.next_2d();
-        L += sample_direct_light(scene, *si, bsdf, wo, u_select, u_light, nl, nb) * (1 / nl);
-      }
-    for (int64_t i = 0; i < bsdf_samples_; ++i) {
-      const float u_lobe = sampler.next_1d();
-      const auto bs = bsdf.sample(wo, u_lobe, sampler.next_2d());
-      if (!bs) continue;
-      const Color weight = bs->f * (abs_dot(bs->wi, si->shading.n) / (bs->pdf * nb));
-      const Ray next = si->spawn(bs->wi);
-      const auto hit = scene.intersect(next);
-      if (!hit) {
-        for (const Emitter* env : scene.infinite_emitters()) {
-          const float w = bs->is_delta()
-                              ? 1
-                              : bsdf_sample_mis_weight(scene, *env, *si, bs->wi, bs->pdf, SurfaceInteraction{}, nl, nb);
-          L += weight * env->Le_infinite(bs->wi) * w;
-        }
-        continue;
-      }
-      const Emitter* e = hit->shape->emitter();
-      if (!e) continue;
-      const Color Le = e->L(*hit, -bs->wi);
-      if (Le.is_black()) continue;
-      const float w = bs->is_delta() ? 1 : bsdf_sample_mis_weight(scene, *e, *si, bs->wi, bs->pdf, *hit, nl, nb);
-      L += weight * Le * w;
-    }
-    return L;
+    DirectLight direct(scene, sampler, *this);
+    random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct);
+    return direct.L;
   }
 
   std::string describe() const override {
@@ -86,9 +68,46 @@ class DirectIntegrator final : public RadianceIntegrator {
   }
 
  private:
+  friend class DirectLight;
   int64_t emitter_samples_, bsdf_samples_;
   bool hide_emitters_;
 };
+
+DirectLight::DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings)
+    : scene_(scene), sampler_(sampler), settings_(settings) {}
+
+WalkAction DirectLight::at_vertex(const WalkVertex& v) {
+  if (!settings_.hide_emitters_)
+    emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
+                        [&](const Emitter&, Color Le, float w) { L += v.beta * Le * w; });
+  const MisCounts counts{float(settings_.emitter_samples_), float(settings_.bsdf_samples_)};
+  if (v.bsdf.lobes() & ~kDelta)
+    for (int64_t i = 0; i < settings_.emitter_samples_; ++i) {
+      const float u_select = sampler_.next_1d();
+      const Vec2 u_light = sampler_.next_2d();
+      L += sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, counts.n_light, counts.n_bsdf) *
+           (1 / counts.n_light);
+    }
+  for (int64_t i = 0; i < settings_.bsdf_samples_; ++i) {
+    const float u_lobe = sampler_.next_1d();
+    const auto bs = v.bsdf.sample(v.wo, u_lobe, sampler_.next_2d());
+    if (!bs) continue;
+    const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / (bs->pdf * counts.n_bsdf));
+    const Arrival arrival = arrival_from(v.si, *bs);
+    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * Le * w; };
+    if (const auto hit = scene_.intersect(v.si.spawn(bs->wi)))
+      emission_at_surface(scene_, *hit, -bs->wi, arrival, counts, add);
+    else
+      emission_from_environment(scene_, bs->wi, arrival, counts, add);
+  }
+  return WalkAction::Stop;
+}
+
+void DirectLight::escaped(const WalkEscape& e) {
+  if (!settings_.hide_emitters_)
+    emission_from_environment(scene_, e.ray.d, e.arrival, {},
+                              [&](const Emitter&, Color Le, float w) { L += e.beta * Le * w; });
+}
 
 }  // namespace
 

@@ -20,9 +20,9 @@
 
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
-#include "integrators/path/path_tracing.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
+#include "integrators/path/path_tracing.h"
 
 namespace caustica {
 namespace {

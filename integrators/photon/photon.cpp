@@ -28,35 +28,25 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
-#include "integrators/path/path_tracing.h"
-#include "integrators/photon/photon_tracing.h"
 #include "core/render/radiance_integrator.h"
 #include "core/scene/scene.h"
+#include "integrators/path/path_tracing.h"
+#include "integrators/photon/photon_density.h"
+#include "integrators/photon/photon_tracing.h"
 
 namespace caustica {
 namespace {
 
-// Density estimation over a round's photon map with a uniform disc kernel.
-class PhotonGather final : public CausticEstimator {
+// Density estimation over a round's caustic photon map.
+class CausticGather final : public CausticEstimator {
  public:
-  PhotonGather(const PhotonMap& map, uint64_t emitted, int64_t max_depth)
+  CausticGather(const PhotonMap& map, uint64_t emitted, int64_t max_depth)
       : map_(&map), emitted_(emitted), max_depth_(max_depth) {}
 
   Color estimate(const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                  int64_t camera_segments) const override {
-    Color sum;
-    map_->for_each_within(si.p, [&](const Photon& ph) {
-      if (max_depth_ >= 0 && int64_t(ph.depth) + camera_segments > max_depth_) return;
-      // Photons on another surface within reach (a wall meeting the floor)
-      // are left out; the bias this avoids vanishes with the radius anyway.
-      if (dot(ph.n, si.ng) < 0.5f) return;
-      const float cos_g = abs_dot(ph.wi, si.ng);
-      if (cos_g == 0) return;
-      // Photon density is per unit of geometric area; shading uses the shading normal.
-      sum += bsdf.eval(wo, ph.wi) * ph.power * (abs_dot(ph.wi, si.shading.n) / cos_g);
-    });
     const float r = map_->radius();
-    return sum / (kPi * r * r * float(emitted_));
+    return gather_photons(*map_, r, si, bsdf, wo, camera_segments, max_depth_).flux / (kPi * r * r * float(emitted_));
   }
 
  private:
@@ -133,7 +123,7 @@ class PhotonIntegrator final : public RadianceIntegrator {
   float initial_radius_ = 0;
   uint32_t rounds_ = 0;
   PhotonMap map_;
-  std::optional<PhotonGather> gather_;
+  std::optional<CausticGather> gather_;
 };
 
 }  // namespace

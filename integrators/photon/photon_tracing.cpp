@@ -4,8 +4,9 @@
 
 #include <algorithm>
 
-#include "core/bsdf/surface_bsdf.h"
 #include "core/scene/scene.h"
+#include "core/transport/light_path_start.h"
+#include "core/transport/random_walk.h"
 
 namespace caustica {
 
@@ -13,41 +14,35 @@ namespace {
 
 constexpr uint64_t kBlock = 1024;
 
+// Keeps the photons of the kind asked for where a light walk lands.
+class PhotonRecorder {
+ public:
+  PhotonRecorder(PhotonPaths kind, std::vector<Photon>& out) : kind_(kind), out_(out) {}
+
+  WalkAction at_vertex(const WalkVertex& v) {
+    if (v.segments >= 2 && (v.bsdf.lobes() & ~kDelta))
+      out_.push_back({v.si.p, v.wo, v.si.ng, v.beta, uint32_t(v.segments)});
+    return WalkAction::Continue;
+  }
+  void escaped(const WalkEscape&) {}
+  // Past a non-delta bounce a path is no caustic any more.
+  WalkAction scattered(const BsdfSample& bs) {
+    return kind_ == PhotonPaths::Caustic && !bs.is_delta() ? WalkAction::Stop : WalkAction::Continue;
+  }
+
+ private:
+  PhotonPaths kind_;
+  std::vector<Photon>& out_;
+};
+
 void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
                   std::vector<Photon>& out) {
-  float u_select = sampler.next_1d();
-  const Vec2 u_pos = sampler.next_2d(), u_dir = sampler.next_2d();
-  const auto choice = scene.light_selection().sample(u_select);
-  if (!choice) return;
-  const auto le = choice->emitter->sample_Le(u_pos, u_dir);
-  if (!le || !(le->pdf_pos > 0) || !(le->pdf_dir > 0) || le->Le.is_black()) return;
-  const float cos = le->n == Vec3() ? 1 : abs_dot(le->n, le->ray.d);
-  Color beta = le->Le * (cos / (choice->pmf * le->pdf_pos * le->pdf_dir));
-  Color throughput(1);
-  Ray ray = le->ray;
-  for (uint32_t depth = 1;; ++depth) {
-    const auto si = scene.intersect(ray);
-    if (!si) return;
-    const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, TransportMode::Importance);
-    // A photon needs at least one more segment, to the camera.
-    const bool within_depth = settings.max_depth < 0 || int64_t(depth) + 1 <= settings.max_depth;
-    if (depth >= 2 && within_depth && (bsdf.lobes() & ~kDelta)) out.push_back({si->p, -ray.d, si->ng, beta, depth});
-    if (!within_depth) return;
-    const float u_lobe = sampler.next_1d();
-    const auto bs = bsdf.sample(-ray.d, u_lobe, sampler.next_2d());
-    if (!bs) return;
-    if (kind == PhotonPaths::Caustic && !bs->is_delta()) return;  // past a non-delta bounce, no caustic
-    const Color weight = bs->f * (abs_dot(bs->wi, si->shading.n) / bs->pdf);
-    beta *= weight;
-    throughput *= weight;
-    ray = si->spawn(bs->wi);
-    if (int64_t(depth) >= settings.rr_depth) {
-      const float q = std::min(throughput.max_component(), settings.rr_max_survival);
-      if (!(sampler.next_1d() < q)) return;
-      beta *= 1 / q;
-      throughput *= 1 / q;
-    }
-  }
+  const auto start = start_light_path(scene, sampler);
+  if (!start) return;
+  PhotonRecorder recorder(kind, out);
+  // A photon needs at least one more segment, to the camera: light walks stop one short of max_depth.
+  random_walk(scene, start->le.ray, start->beta, TransportMode::Importance, light_walk_limits(settings), sampler,
+              recorder);
 }
 
 }  // namespace
@@ -59,8 +54,7 @@ std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     auto sampler = scene.sensor().sampler()->clone();
     for (uint64_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
-      // Keyed apart from every pixel's camera samples.
-      sampler->start_sample({-1, int(round)}, i, seed);
+      sampler->start_sample(SampleKey::photon_round(round), i, seed);
       trace_photon(scene, kind, *sampler, settings, found[b]);
     }
   });

@@ -31,11 +31,15 @@
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
+#include "core/render/camera_sample.h"
 #include "core/render/direct_light.h"
 #include "core/render/integrator.h"
 #include "core/render/path_settings.h"
-#include "integrators/photon/photon_tracing.h"
 #include "core/scene/scene.h"
+#include "core/transport/emission.h"
+#include "core/transport/random_walk.h"
+#include "integrators/photon/photon_density.h"
+#include "integrators/photon/photon_tracing.h"
 
 namespace caustica {
 namespace {
@@ -45,6 +49,48 @@ struct PixelState {
   Color tau;     // photon flux gathered, rescaled with the radius
   double n = 0;  // photons kept
   float radius = 0;
+};
+
+// A camera walk through delta bounces to the pixel's visible point: the
+// emission it meets on the way, next-event estimation there (weight one, as
+// no BSDF sample follows to share it with) and the photons within the
+// pixel's radius.
+class VisiblePoint {
+ public:
+  VisiblePoint(const Scene& scene, const PhotonMap& map, Sampler& sampler, const PathSettings& settings, PixelState& px)
+      : scene_(scene), map_(map), sampler_(sampler), settings_(settings), px_(px) {}
+
+  WalkAction at_vertex(const WalkVertex& v) {
+    if (v.segments > 1 || !settings_.hide_emitters)
+      emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
+                          [&](const Emitter&, Color Le, float w) { px_.direct += v.beta * Le * w; });
+    if (v.last) return WalkAction::Stop;
+    if (!(v.bsdf.lobes() & ~kDelta)) return WalkAction::Continue;
+    const float u_select = sampler_.next_1d();
+    px_.direct += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, sampler_.next_2d(), 1, 0);
+    const PhotonGather g = gather_photons(map_, px_.radius, v.si, v.bsdf, v.wo, v.segments, settings_.max_depth);
+    flux = v.beta * g.flux;
+    photons = double(g.count);
+    return WalkAction::Stop;
+  }
+
+  void escaped(const WalkEscape& e) {
+    if (e.segments > 1 || !settings_.hide_emitters)
+      emission_from_environment(scene_, e.ray.d, e.arrival, {},
+                                [&](const Emitter&, Color Le, float w) { px_.direct += e.beta * Le * w; });
+  }
+
+  WalkAction scattered(const BsdfSample&) { return WalkAction::Continue; }
+
+  Color flux;          // the photons' contribution, times the path's weight
+  double photons = 0;  // how many were found
+
+ private:
+  const Scene& scene_;
+  const PhotonMap& map_;
+  Sampler& sampler_;
+  const PathSettings& settings_;
+  PixelState& px_;
 };
 
 class StochasticProgressivePhotonMapping final : public Integrator {
@@ -117,49 +163,13 @@ class StochasticProgressivePhotonMapping final : public Integrator {
   void iterate_pixel(const Scene& scene, const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint32_t pass,
                      uint64_t seed) {
     PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
-    sampler.start_sample(pixel, pass, seed);
-    const FilterSample fs = scene.sensor().film()->filter().sample(sampler.next_2d());
-    const Vec2 raster{pixel.x + 0.5f + fs.offset.x, pixel.y + 0.5f + fs.offset.y};
-    Ray ray = scene.sensor().generate_ray(raster, scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f));
-    Color beta(1), phi;
-    double m = 0;
-    for (int64_t depth = 0; settings_.max_depth < 0 || depth < settings_.max_depth; ++depth) {
-      const auto si = scene.intersect(ray);
-      const bool show = depth > 0 || !settings_.hide_emitters;
-      if (!si) {
-        if (show)
-          for (const Emitter* env : scene.infinite_emitters()) px.direct += beta * env->Le_infinite(ray.d);
-        break;
-      }
-      if (const Emitter* emitter = si->shape->emitter(); emitter && show) px.direct += beta * emitter->L(*si, -ray.d);
-      if (settings_.max_depth >= 0 && depth + 1 >= settings_.max_depth) break;
-      const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, TransportMode::Radiance);
-      const Vec3 wo = -ray.d;
-      if (bsdf.lobes() & ~kDelta) {
-        // The visible point: direct light by shadow rays alone (no BSDF
-        // sample follows to share it with), the rest from photons.
-        const float u_select = sampler.next_1d();
-        px.direct += beta * sample_direct_light(scene, *si, bsdf, wo, u_select, sampler.next_2d(), 1, 0);
-        map.for_each_within(si->p, px.radius, [&](const Photon& ph) {
-          if (settings_.max_depth >= 0 && int64_t(ph.depth) + depth + 1 > settings_.max_depth) return;
-          if (dot(ph.n, si->ng) < 0.5f) return;
-          const float cos_g = abs_dot(ph.wi, si->ng);
-          if (cos_g == 0) return;
-          phi += beta * bsdf.eval(wo, ph.wi) * ph.power * (abs_dot(ph.wi, si->shading.n) / cos_g);
-          ++m;
-        });
-        break;
-      }
-      const float u_lobe = sampler.next_1d();
-      const auto bs = bsdf.sample(wo, u_lobe, sampler.next_2d());
-      if (!bs) break;
-      beta *= bs->f * (abs_dot(bs->wi, si->shading.n) / bs->pdf);
-      ray = si->spawn(bs->wi);
-    }
-    if (m > 0) {
-      const double n_new = px.n + alpha_ * m;
-      const double shrink2 = n_new / (px.n + m);  // R_new^2 / R^2
-      px.tau = (px.tau + phi) * float(shrink2);
+    const CameraSample cs = sample_camera_ray(scene, sampler, pixel, pass, seed);
+    VisiblePoint visible(scene, map, sampler, settings_, px);
+    random_walk(scene, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_), sampler, visible);
+    if (visible.photons > 0) {
+      const double n_new = px.n + alpha_ * visible.photons;
+      const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2
+      px.tau = (px.tau + visible.flux) * float(shrink2);
       px.radius = float(px.radius * std::sqrt(shrink2));
       px.n = n_new;
     }

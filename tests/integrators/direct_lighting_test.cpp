@@ -51,7 +51,7 @@ std::pair<double, double> estimate(const Scene& scene, float x, float y, int n) 
   float out[3];
   SplatList unused;
   for (int i = 0; i < n; ++i) {
-    s->start_sample({int(x * 100), int(y * 100)}, i, 0);
+    s->start_sample(SampleKey::camera({int(x * 100), int(y * 100)}), i, 0);
     scene.integrator()->sample(scene, {{x, y, 0.01f}, {0, 0, -1}}, *s, out, unused);
     sum += out[0];
     sum2 += double(out[0]) * out[0];
@@ -176,10 +176,10 @@ TEST(DirectLighting, EmittersSeenDirectlyAndHidden) {
   float out[3];
   SplatList unused;
   const Ray down{{0, 0, 2}, {0, 0, -1}};
-  s->start_sample({0, 0}, 0, 0);
+  s->start_sample(SampleKey::camera({0, 0}), 0, 0);
   shown->integrator()->sample(*shown, down, *s, out, unused);
   EXPECT_FLOAT_EQ(out[0], kLe);
-  s->start_sample({0, 0}, 0, 0);
+  s->start_sample(SampleKey::camera({0, 0}), 0, 0);
   hidden->integrator()->sample(*hidden, down, *s, out, unused);
   EXPECT_FLOAT_EQ(out[0], 0);
 }

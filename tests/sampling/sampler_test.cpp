@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/registry/properties.h"
 #include "core/sampling/pcg32.h"
 #include "tests/support/chi2.h"
@@ -16,11 +18,15 @@ std::unique_ptr<Sampler> make_sampler(int64_t seed = 0) {
   return std::dynamic_pointer_cast<Sampler>(info->create(props))->clone();
 }
 
-std::vector<float> draw(Sampler& s, Vec2i pixel, uint64_t index, uint64_t seed, int n) {
-  s.start_sample(pixel, index, seed);
+std::vector<float> draw(Sampler& s, SampleKey key, uint64_t index, uint64_t seed, int n) {
+  s.start_sample(key, index, seed);
   std::vector<float> out;
   for (int i = 0; i < n; ++i) out.push_back(s.next_1d());
   return out;
+}
+
+std::vector<float> draw(Sampler& s, Vec2i pixel, uint64_t index, uint64_t seed, int n) {
+  return draw(s, SampleKey::camera(pixel), index, seed, n);
 }
 
 TEST(Pcg32, AdvanceMatchesStepping) {
@@ -41,6 +47,37 @@ TEST(IndependentSampler, IsAPureFunctionOfPixelIndexAndSeed) {
   EXPECT_NE(first, draw(*make_sampler(9), {3, 7}, 5, 1, 8));
 }
 
+TEST(IndependentSampler, StreamsAreIndependentSequencesForTheSameKey) {
+  auto s = make_sampler();
+  const auto camera = draw(*s, SampleKey::camera({4, 2}), 3, 1, 8);
+  const auto light = draw(*s, SampleKey::light_path({4, 2}), 3, 1, 8);
+  const auto photon = draw(*s, SampleKey::photon_round((uint64_t(2) << 32) | 4), 3, 1, 8);
+  EXPECT_NE(camera, light);
+  EXPECT_NE(camera, photon);
+  EXPECT_NE(light, photon);
+  draw(*s, SampleKey::camera({0, 0}), 0, 1, 3);
+  EXPECT_EQ(light, draw(*s, SampleKey::light_path({4, 2}), 3, 1, 8));
+  EXPECT_EQ(photon, draw(*s, SampleKey::photon_round((uint64_t(2) << 32) | 4), 3, 1, 8));
+}
+
+// Significance 1%: a light path's numbers must not follow its pixel's
+// camera numbers; Pearson's r over 4096 pairs is near normal with standard
+// deviation 1/64, so |r| < 2.576 / 64 holds with probability 99 %.
+TEST(IndependentSampler, StreamsAreUncorrelated) {
+  auto s = make_sampler();
+  double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  const int n = 4096;
+  for (int i = 0; i < n; ++i) {
+    const Vec2i pixel{i % 64, i / 64};
+    const double x = draw(*s, SampleKey::camera(pixel), 0, 0, 1)[0];
+    const double y = draw(*s, SampleKey::light_path(pixel), 0, 0, 1)[0];
+    sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
+  }
+  const double cov = sxy / n - sx / n * sy / n;
+  const double r = cov / std::sqrt((sxx / n - sx / n * sx / n) * (syy / n - sy / n * sy / n));
+  EXPECT_LT(std::abs(r), 2.576 / 64);
+}
+
 TEST(IndependentSampler, ValuesAreInUnitInterval) {
   auto s = make_sampler();
   for (int i = 0; i < 100; ++i)
@@ -59,7 +96,7 @@ TEST(IndependentSampler, IsUniformAcrossPixelsAndDimensions) {
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x)
       for (uint64_t i = 0; i < 16; ++i) {
-        s->start_sample({x, y}, i, 0);
+        s->start_sample(SampleKey::camera({x, y}), i, 0);
         s->next_1d();
         const Vec2 u = s->next_2d();
         observed[int(u.x * kBins) * kBins + int(u.y * kBins)] += 1;

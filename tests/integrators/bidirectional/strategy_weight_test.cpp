@@ -18,9 +18,9 @@
 #include <cstdio>
 
 #include "core/registry/properties.h"
+#include "core/scene/scene_loader.h"
 #include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/subpath.h"
-#include "core/scene/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -109,17 +109,15 @@ struct Tally {
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
   auto sampler = make_sampler();
-  const SubpathLimits camera_limits = camera_subpath_limits(8, 5, 0.95f);
-  const SubpathLimits light_limits = light_subpath_limits(8, 5, 0.95f);
+  const PathSettings settings{8, 5, 0.95f, false};
   const Film& film = *scene.sensor().film();
   std::vector<PathVertex> camera, light;
   for (int i = 0; i < samples; ++i) {
-    sampler->start_sample({i % film.width(), i / film.width() % film.height()}, uint64_t(i), 7);
+    sampler->start_sample(SampleKey::camera({i % film.width(), i / film.width() % film.height()}), uint64_t(i), 7);
     const Vec2 raster{sampler->next_1d() * film.width(), sampler->next_1d() * film.height()};
-    trace_camera_subpath(scene, scene.sensor().generate_ray(raster, sampler->next_2d()), *sampler, camera_limits,
-                         camera);
+    trace_camera_subpath(scene, scene.sensor().generate_ray(raster, sampler->next_2d()), *sampler, settings, camera);
     compute_densities(scene, camera);
-    trace_light_subpath(scene, *sampler, light_limits, light);
+    trace_light_subpath(scene, *sampler, settings, light);
     compute_densities(scene, light);
     for (int t = 1; t <= int(camera.size()); ++t)
       for (int s = 0; s <= int(light.size()); ++s) {

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstdint>
+
+#include "core/geometry/ray.h"
+#include "core/math/vec.h"
+#include "core/sampling/sampler.h"
+
+namespace caustica {
+
+class Scene;
+
+// A camera ray through a pixel, placed by importance-sampling the pixel
+// filter, and the weight the filter gives it.
+struct CameraSample {
+  Ray ray;
+  float weight;
+};
+
+// Starts `sampler` on sample `index` of the pixel's camera stream and draws
+// the ray from it: the filter's two numbers, then the lens's two if the
+// camera has a lens. Every algorithm that starts a path at the camera
+// starts it here, so they all see the same rays.
+CameraSample sample_camera_ray(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed);
+
+}  // namespace caustica
