@@ -13,7 +13,7 @@
 #include <map>
 #include <string>
 
-#include "core/render/renderer.h"
+#include "core/job/render_job.h"
 #include "core/scene/scene_loader.h"
 
 namespace caustica {
@@ -23,17 +23,17 @@ constexpr int kRes = 64;
 constexpr uint32_t kSpp = 4;
 
 struct Recording {
-  std::unique_ptr<Scene> scene;
+  LoadedScene scene;
   std::vector<RayLog::Entry> rays;
 };
 
-RenderStats render_once(const Scene& scene, uint32_t spp, uint64_t seed) {
-  FilmBuffer film(kRes, kRes, scene.integrator()->channels());
-  RenderOptions options;
-  options.spp = spp;
-  options.seed = seed;
-  options.threads = 1;
-  return render(scene, options, film);
+RenderStats render_once(const LoadedScene& scene, uint32_t spp, uint64_t seed) {
+  RenderSettings settings;
+  settings.spp = spp;
+  settings.seed = seed;
+  settings.threads = 1;
+  settings.aovs = false;
+  return RenderJob(scene, settings).run().stats;
 }
 
 // Benchmarks run one after another on the main thread, so a plain cache will do.
@@ -45,7 +45,7 @@ const Recording& recording(const std::string& name) {
                                   {{"res", std::to_string(kRes)}, {"integrator", "path"}});
     RayLog log;
     it->second.scene->set_ray_log(&log);
-    render_once(*it->second.scene, kSpp, 0);
+    render_once(it->second.scene, kSpp, 0);
     it->second.scene->set_ray_log(nullptr);
     it->second.rays = log.entries();
   }
@@ -91,7 +91,7 @@ void BM_SceneQueries(benchmark::State& state, const std::string& name) {
 void BM_PathTracer(benchmark::State& state, const std::string& name) {
   const Recording& rec = recording(name);
   uint64_t rays = 0, seed = 1;
-  for (auto _ : state) rays += render_once(*rec.scene, kSpp, seed++).rays;
+  for (auto _ : state) rays += render_once(rec.scene, kSpp, seed++).rays;
   state.SetItemsProcessed(int64_t(rays));
 }
 

@@ -22,7 +22,7 @@ int InfoCommand::run() const {
   for (const auto& s : scene->shapes()) ++shape_kinds[s->kind()];
   std::printf("scene: %s\n", scene_.c_str());
   std::printf("film: %dx%d\n", scene->sensor().film()->width(), scene->sensor().film()->height());
-  std::printf("integrator: %s\n", scene->integrator()->describe().c_str());
+  std::printf("integrator: %s\n", scene.integrator->describe().c_str());
   std::printf("shapes: %zu", scene->shapes().size());
   for (const auto& [kind, n] : shape_kinds) std::printf(" (%s: %d)", kind.c_str(), n);
   int area = 0, delta = 0, infinite = 0;

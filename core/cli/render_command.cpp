@@ -8,9 +8,8 @@
 #include "core/cli/interrupt.h"
 #include "core/cli/progress_display.h"
 #include "core/image/image_output.h"
-#include "core/render/renderer.h"
-#include "core/scene/scene_loader.h"
-#include "core/version.h"
+#include "core/job/render_job.h"
+#include "core/job/render_outputs.h"
 
 namespace caustica {
 
@@ -30,6 +29,11 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("-o,--output", output_, "output EXR (default: SCENE_NAME.exr); the PNG goes beside it");
   auto* spp = command_->add_option("--spp", spp_, "samples per pixel (default: the scene's sampler)");
   command_->add_option("--time", time_, "render for this many seconds instead")->excludes(spp);
+  command_->add_option("--first-sample", first_sample_,
+                       "first sample index: render indices N .. N+spp-1, to merge with renders of other ranges");
+  command_->add_flag("--raw-sums", raw_sums_,
+                     "store the film's raw sums (float EXR), so that `caustica merge` of renders of disjoint "
+                     "--first-sample ranges gives exactly the image of one render");
   command_->add_option("--integrator", integrator_, "replace the scene's integrator: NAME or NAME:param=value,...");
   command_->add_option("-D", defines_, "define a scene parameter: -D name=value")->allow_extra_args(false);
   command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
@@ -49,46 +53,17 @@ std::string replay_command(const std::string& scene, SampleId id, uint64_t seed)
          std::to_string(id.pixel.x) + "," + std::to_string(id.pixel.y) + " --debug-sample " + std::to_string(id.index);
 }
 
-// The EXR's layers: the integrator's channels, then for radiance the
-// first-hit AOVs, the per-pixel variance of the estimate and the number of
-// samples each pixel received. Splatted light reaches a pixel from other
-// pixels' samples, and progressive photon mapping keeps no samples, so their
-// variance is unknown and the layer is left out.
-Image assemble_layers(const FilmBuffer& film, const FilmBuffer* aovs) {
-  Image image{film.width(), film.height(), film.channels(), film.resolve()};
-  if (!aovs) return image;
-  const size_t pixels = size_t(film.width()) * film.height();
-  const std::vector<float> aov = aovs->resolve(), variance = film.variance();
-  const size_t na = aovs->channel_count(), nc = film.channel_count();
-  std::vector<std::string> names = film.channels();
-  for (const auto& c : aovs->channels()) names.push_back(c);
-  const bool variance_known = !film.has_splats() && !film.has_image();
-  if (variance_known)
-    for (const char* c : {"variance.R", "variance.G", "variance.B"}) names.push_back(c);
-  names.push_back("samples.Y");
-  const size_t total = names.size();
-  std::vector<float> pixels_out(pixels * total);
-  for (size_t p = 0; p < pixels; ++p) {
-    float* out = &pixels_out[p * total];
-    std::copy_n(&image.pixels[p * nc], nc, out);
-    std::copy_n(&aov[p * na], na, out + nc);
-    if (variance_known) std::copy_n(&variance[p * 3], 3, out + nc + na);
-    out[total - 1] = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
-  }
-  return {film.width(), film.height(), names, pixels_out};
-}
-
 }  // namespace
 
-int RenderCommand::replay(const Scene& scene) const {
-  const Film& film = *scene.sensor().film();
+int RenderCommand::replay(const RenderJob& job) const {
+  const Film& film = *job.scene()->sensor().film();
   int x = -1, y = -1;
   char comma = 0;
   std::istringstream in(debug_pixel_);
   if (!(in >> x >> comma >> y) || comma != ',' || x < 0 || y < 0 || x >= film.width() || y >= film.height())
     throw std::invalid_argument("--debug-pixel expects X,Y inside the film, got '" + debug_pixel_ + "'");
-  const ReplayedSample sample = replay_sample(scene, {x, y}, debug_sample_, seed_);
-  const auto names = scene.integrator()->channels();
+  const ReplayedSample sample = job.replay({x, y}, debug_sample_);
+  const auto names = job.integrator().channels();
   for (size_t c = 0; c < sample.values.size(); ++c) std::printf("%s = %.9g\n", names[c].c_str(), sample.values[c]);
   for (const Splat& s : sample.splats.splats())
     std::printf("splat at (%.3f, %.3f) to %s: %.9g %.9g %.9g\n", s.raster.x, s.raster.y, names[s.channel].c_str(),
@@ -102,51 +77,41 @@ int RenderCommand::run() const {
   // Installed first, so an interrupt while the scene loads still ends in an
   // image (of the first pass) rather than in nothing.
   install_interrupt_handler();
-  auto scene = load_scene(scene_, parse_defines(defines_));
-  if (!integrator_.empty()) scene->set_integrator(make_integrator(integrator_));
-  if (!debug_pixel_.empty()) return replay(*scene);
+  RenderSettings settings;
+  settings.integrator = integrator_;
+  settings.spp = spp_;
+  settings.first_sample = first_sample_;
+  settings.time_limit = time_;
+  settings.seed = seed_;
+  settings.threads = threads_;
+  settings.stop = &interrupt_requested();
+  const RenderJob job = load_render_job(scene_, parse_defines(defines_), settings);
+  if (!debug_pixel_.empty()) return replay(job);
 
   const std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
   if (exr.extension() != ".exr") throw std::invalid_argument("output must end in .exr: " + exr.string());
   std::filesystem::path png = exr;
   png.replace_extension(".png");
   // Everything that can fail on bad options fails before the render.
-  const Developer developer = develop_.make(scene->tone_operator());
-  const Film& film_settings = *scene->sensor().film();
+  const Developer developer = develop_.make(job.scene().tone_operator);
 
-  RenderOptions options;
-  options.spp = spp_;
-  options.time_limit = time_;
-  options.seed = seed_;
-  options.threads = threads_;
-  options.stop = &interrupt_requested();
-  FilmBuffer film(film_settings.width(), film_settings.height(), scene->integrator()->channels());
-  const bool radiance = film.channels() == std::vector<std::string>{"R", "G", "B"};
-  std::optional<FilmBuffer> aovs;
-  if (radiance) aovs.emplace(film_settings.width(), film_settings.height(), standard_aov_channels());
-  const std::string plan = scene->integrator()->plan(*scene);
+  const std::string plan = job.plan();
   if (!quiet_ && !plan.empty()) std::printf("%s\n", plan.c_str());
   RenderProgress progress;
-  RenderStats stats;
+  std::optional<RenderResult> result;
   {
     std::optional<ProgressDisplay> display;
     if (!quiet_) display.emplace(progress, time_);
-    stats = render(*scene, options, film, aovs ? &*aovs : nullptr, &progress);
+    result = job.run(&progress);
   }
+  const RenderStats& stats = result->stats;
 
-  const Image image = assemble_layers(film, aovs ? &*aovs : nullptr);
-  const std::map<std::string, std::string> metadata = {{"caustica:scene", scene_},
-                                                       {"caustica:plan", plan},
-                                                       {"caustica:integrator", scene->integrator()->describe()},
-                                                       {"caustica:spp", std::to_string(stats.spp)},
-                                                       {"caustica:seconds", std::to_string(stats.seconds)},
-                                                       {"caustica:samples", std::to_string(stats.samples)},
-                                                       {"caustica:rays", std::to_string(stats.rays)},
-                                                       {"caustica:seed", std::to_string(seed_)},
-                                                       {"caustica:interrupted", stats.interrupted ? "true" : "false"},
-                                                       {"caustica:develop", developer.describe()},
-                                                       {"caustica:version", kVersion}};
-  const bool half = exr_format_.empty() ? film_settings.half_float() : exr_format_ == "half";
+  const Image image =
+      render_layers(result->film, result->aovs ? &*result->aovs : nullptr, stats.variance_known, raw_sums_);
+  std::map<std::string, std::string> metadata = render_metadata(job, *result, scene_, raw_sums_);
+  metadata["caustica:develop"] = developer.describe();
+  const bool half =
+      !raw_sums_ && (exr_format_.empty() ? job.scene()->sensor().film()->half_float() : exr_format_ == "half");
   write_exr(exr, image, metadata, half);
   write_png(png, image.width, image.height, developer.develop(image), develop_.png_bits());
 
@@ -154,7 +119,7 @@ int RenderCommand::run() const {
     std::printf(
         "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped%s "
         "-> %s, %s\n",
-        scene_.c_str(), scene->integrator()->describe().c_str(), film.width(), film.height(), stats.spp, stats.seconds,
+        scene_.c_str(), job.integrator().describe().c_str(), image.width, image.height, stats.spp, stats.seconds,
         stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6,
         static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "", exr.c_str(),
         png.c_str());

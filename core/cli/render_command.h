@@ -17,7 +17,7 @@ class RenderCommand {
   int run() const;
 
  private:
-  int replay(const class Scene& scene) const;
+  int replay(const class RenderJob& job) const;
 
   CLI::App* command_ = nullptr;
   std::string scene_, output_, integrator_, debug_pixel_, exr_format_;
@@ -25,8 +25,8 @@ class RenderCommand {
   uint32_t spp_ = 0;
   double time_ = 0;
   int threads_ = 0;
-  uint64_t seed_ = 0, debug_sample_ = 0;
-  bool quiet_ = false;
+  uint64_t seed_ = 0, debug_sample_ = 0, first_sample_ = 0;
+  bool quiet_ = false, raw_sums_ = false;
   DevelopOptions develop_;
 };
 

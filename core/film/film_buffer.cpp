@@ -21,7 +21,7 @@ FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels)
   count_.assign(pixels, 0);
 }
 
-void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float weight) {
+void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float weight, uint32_t samples) {
   bool finite = std::isfinite(weight);
   for (float v : values) finite = finite && std::isfinite(v);
   if (!finite) {
@@ -34,7 +34,7 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   weight_sum_[p] += weight;
   const double w2 = double(weight) * weight;
   weight2_sum_[p] += w2;
-  ++count_[p];
+  count_[p] += samples;
   for (size_t c = 0; c < std::min<size_t>(3, values.size()); ++c) {
     w2x_[p * 3 + c] += w2 * values[c];
     w2x2_[p * 3 + c] += w2 * values[c] * values[c];
@@ -82,13 +82,7 @@ void FilmBuffer::record_dropped(const SplatList& list) {
   if (list.dropped() > 0) dropped_->record(list.first_dropped(), list.dropped());
 }
 
-void FilmBuffer::set_image(std::vector<float> pixels) {
-  if (pixels.size() != weighted_sum_.size()) throw std::invalid_argument("FilmBuffer::set_image: wrong size");
-  image_ = std::move(pixels);
-}
-
 std::vector<float> FilmBuffer::resolve() const {
-  if (!image_.empty()) return image_;
   std::vector<float> out(weighted_sum_.size(), 0);
   const size_t nc = channels_.size();
   for (size_t p = 0; p < weight_sum_.size(); ++p)
@@ -112,6 +106,75 @@ std::vector<float> FilmBuffer::variance() const {
     }
   }
   return out;
+}
+
+namespace {
+
+// Three floats whose sum is d: each takes what the previous left over.
+void split_double(double d, float* out) {
+  out[0] = float(d);
+  const double rest = d - double(out[0]);
+  out[1] = float(rest);
+  out[2] = float(rest - double(out[1]));
+}
+
+double join_floats(const float* in) { return double(in[0]) + double(in[1]) + double(in[2]); }
+
+}  // namespace
+
+template <class Self, class F>
+void FilmBuffer::for_each_sum(Self& film, size_t p, F&& f) {
+  const size_t nc = film.channels_.size();
+  for (size_t c = 0; c < nc; ++c) f(film.weighted_sum_[p * nc + c]);
+  f(film.weight_sum_[p]);
+  f(film.weight2_sum_[p]);
+  for (size_t c = 0; c < 3; ++c) f(film.w2x_[p * 3 + c]);
+  for (size_t c = 0; c < 3; ++c) f(film.w2x2_[p * 3 + c]);
+  if (!film.splat_sum_.empty())
+    for (size_t c = 0; c < nc; ++c) f(film.splat_sum_[p * nc + c]);
+}
+
+std::vector<std::string> FilmBuffer::raw_channels(const std::string& prefix) const {
+  std::vector<std::string> sums;
+  for (const std::string& c : channels_) sums.push_back("sum." + c);
+  sums.insert(sums.end(), {"weight", "weight2"});
+  // The moments of the first three channels (the beauty), whatever their names.
+  for (const char* moment : {"w2x.", "w2x2."})
+    for (size_t c = 0; c < 3; ++c) sums.push_back(moment + (c < channels_.size() ? channels_[c] : std::to_string(c)));
+  if (!splat_sum_.empty())
+    for (const std::string& c : channels_) sums.push_back("splat." + c);
+  std::vector<std::string> names;
+  for (const std::string& s : sums)
+    for (const char* part : {".0", ".1", ".2"}) names.push_back(prefix + s + part);
+  names.push_back(prefix + "count");
+  return names;
+}
+
+std::vector<float> FilmBuffer::export_raw() const {
+  const size_t per_pixel = raw_channels("").size();
+  std::vector<float> out(count_.size() * per_pixel);
+  for (size_t p = 0; p < count_.size(); ++p) {
+    float* o = &out[p * per_pixel];
+    for_each_sum(*this, p, [&](double sum) {
+      split_double(sum, o);
+      o += 3;
+    });
+    *o = float(count_[p]);
+  }
+  return out;
+}
+
+void FilmBuffer::add_raw(std::span<const float> pixels, size_t stride, size_t offset, uint64_t splat_paths) {
+  if (splat_paths > 0) enable_splats();
+  splat_paths_per_pixel_ += splat_paths;
+  for (size_t p = 0; p < count_.size(); ++p) {
+    const float* in = &pixels[p * stride + offset];
+    for_each_sum(*this, p, [&](double& sum) {
+      sum += join_floats(in);
+      in += 3;
+    });
+    count_[p] += uint32_t(*in);
+  }
 }
 
 SampleId FilmBuffer::first_dropped() const {

@@ -35,8 +35,10 @@ class FilmBuffer {
   const std::vector<std::string>& channels() const { return channels_; }
   size_t channel_count() const { return channels_.size(); }
 
-  // Safe to call concurrently for different pixels.
-  void add_sample(SampleId id, std::span<const float> values, float weight);
+  // Safe to call concurrently for different pixels. `samples` is how many
+  // samples the values stand for: 1, except for an iterative estimator's
+  // per-pixel estimate after as many iterations.
+  void add_sample(SampleId id, std::span<const float> values, float weight, uint32_t samples = 1);
 
   // Makes room for the splat image; call before splats arrive.
   void enable_splats();
@@ -50,14 +52,8 @@ class FilmBuffer {
   // Light paths traced per pixel so far: the splat image is divided by it.
   void set_splat_paths_per_pixel(uint64_t n) { splat_paths_per_pixel_ = n; }
   bool has_splats() const { return !splat_sum_.empty(); }
-  // An image made elsewhere from state the integrator keeps per pixel
-  // (stochastic progressive photon mapping), pixel-interleaved like
-  // resolve(): resolve() returns it in place of the samples' means.
-  void set_image(std::vector<float> pixels);
-  bool has_image() const { return !image_.empty(); }
 
-  // The weighted mean of each channel plus the splat image (or the image
-  // set_image gave), pixel-interleaved.
+  // The weighted mean of each channel plus the splat image, pixel-interleaved.
   std::vector<float> resolve() const;
   // Per-pixel variance of the weighted mean of the beauty channels,
   // estimated from the samples as sum w^2 (x - mean)^2 / (sum w)^2 with the
@@ -65,6 +61,20 @@ class FilmBuffer {
   // not part of it.
   std::vector<float> variance() const;
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
+
+  // The sums behind resolve() and variance() as float channels named
+  // prefix + "sum.R.0" ..., for storing a render so that renders of
+  // disjoint sample ranges merge into the film of one render of them all.
+  // Each double sum becomes three floats (.0, .1, .2) whose sum is exactly
+  // the double (for magnitudes between 1e-24 and 3e38); the sample count is
+  // one channel.
+  std::vector<std::string> raw_channels(const std::string& prefix) const;
+  // Pixel-interleaved, raw_channels().size() values per pixel.
+  std::vector<float> export_raw() const;
+  // Adds sums exported from a film of the same size and channels: `pixels`
+  // holds `stride` floats per pixel, the raw channels from `offset` on.
+  // `splat_paths` is the light paths per pixel behind its splats.
+  void add_raw(std::span<const float> pixels, size_t stride, size_t offset, uint64_t splat_paths);
 
   uint64_t dropped_samples() const { return dropped_->count.load(); }
   // The first dropped sample (lowest pixel, then index), if any.
@@ -81,7 +91,9 @@ class FilmBuffer {
   std::vector<uint32_t> count_;
   std::vector<double> splat_sum_;  // channels per pixel, allocated by the first splat
   uint64_t splat_paths_per_pixel_ = 0;
-  std::vector<float> image_;
+  // The double sums of one pixel in the order raw_channels() names them.
+  template <class Self, class F>
+  static void for_each_sum(Self& film, size_t p, F&& f);
   struct DropLog {
     std::atomic<uint64_t> count{0};
     std::mutex mutex;

@@ -14,13 +14,15 @@ std::invalid_argument part_error(const RenderFile& part, const std::string& prob
   return std::invalid_argument("'" + part.path + "' " + problem);
 }
 
-std::string value_of(const RenderFile& part, const std::string& key) {
+}  // namespace
+
+std::string metadata_value(const RenderFile& part, const std::string& key) {
   const auto it = part.metadata.find(key);
   return it == part.metadata.end() ? std::string() : it->second;
 }
 
-double number_of(const RenderFile& part, const std::string& key) {
-  const std::string text = value_of(part, key);
+double metadata_number(const RenderFile& part, const std::string& key) {
+  const std::string text = metadata_value(part, key);
   try {
     size_t used = 0;
     const double value = std::stod(text, &used);
@@ -30,27 +32,33 @@ double number_of(const RenderFile& part, const std::string& key) {
   throw part_error(part, "has no number in its " + key + " metadata (got '" + text + "')");
 }
 
+namespace {
+
 // The number of samples in each pixel of a render.
 std::vector<double> sample_counts(const RenderFile& part) {
   const Image& image = part.image;
   const size_t pixels = size_t(image.width) * image.height, nc = image.channels.size();
   const int layer = image.channel_index("samples.Y");
-  if (layer < 0) return std::vector<double>(pixels, number_of(part, "caustica:spp"));
+  if (layer < 0) return std::vector<double>(pixels, metadata_number(part, "caustica:spp"));
   std::vector<double> counts(pixels);
   for (size_t p = 0; p < pixels; ++p) counts[p] = image.pixels[p * nc + layer];
   return counts;
 }
 
-void check_compatible(const RenderFile& first, const RenderFile& part) {
+}  // namespace
+
+void check_same_render(const RenderFile& first, const RenderFile& part) {
   if (part.image.width != first.image.width || part.image.height != first.image.height)
     throw part_error(part, "differs in size from '" + first.path + "'");
   if (part.image.channels != first.image.channels)
     throw part_error(part, "has other channels than '" + first.path + "'");
   for (const char* key : {"caustica:scene", "caustica:integrator"})
-    if (value_of(part, key) != value_of(first, key))
-      throw part_error(part, std::string("has another ") + key + " than '" + first.path + "' ('" + value_of(part, key) +
-                                 "' against '" + value_of(first, key) + "')");
+    if (metadata_value(part, key) != metadata_value(first, key))
+      throw part_error(part, std::string("has another ") + key + " than '" + first.path + "' ('" +
+                                 metadata_value(part, key) + "' against '" + metadata_value(first, key) + "')");
 }
+
+namespace {
 
 enum class Rule { Mean, Variance, Count };
 
@@ -63,8 +71,8 @@ Rule rule_for(const std::string& channel) {
 }  // namespace
 
 std::vector<std::string> render_seeds(const RenderFile& render) {
-  std::string list = value_of(render, "caustica:seeds");
-  if (list.empty()) list = value_of(render, "caustica:seed");
+  std::string list = metadata_value(render, "caustica:seeds");
+  if (list.empty()) list = metadata_value(render, "caustica:seed");
   std::vector<std::string> seeds;
   std::istringstream in(list);
   for (std::string seed; std::getline(in, seed, ',');)
@@ -83,7 +91,7 @@ RenderFile merge_renders(const std::vector<RenderFile>& parts) {
   const RenderFile& first = parts.front();
   std::map<std::string, std::string> seed_owner;
   for (const RenderFile& part : parts) {
-    check_compatible(first, part);
+    check_same_render(first, part);
     for (const std::string& seed : render_seeds(part))
       if (const auto [it, fresh] = seed_owner.emplace(seed, part.path); !fresh)
         throw part_error(part, "and '" + it->second + "' were both rendered with seed " + seed +
@@ -126,17 +134,18 @@ RenderFile merge_renders(const std::vector<RenderFile>& parts) {
   merged.metadata.erase("caustica:seed");
   merged.metadata["caustica:seeds"] = seeds;
   bool interrupted = false;
-  for (const RenderFile& part : parts) interrupted = interrupted || value_of(part, "caustica:interrupted") == "true";
+  for (const RenderFile& part : parts)
+    interrupted = interrupted || metadata_value(part, "caustica:interrupted") == "true";
   merged.metadata["caustica:interrupted"] = interrupted ? "true" : "false";
   for (const char* key : {"caustica:spp", "caustica:seconds", "caustica:samples", "caustica:rays"}) {
     bool everywhere = true;
-    for (const RenderFile& part : parts) everywhere = everywhere && !value_of(part, key).empty();
+    for (const RenderFile& part : parts) everywhere = everywhere && !metadata_value(part, key).empty();
     if (!everywhere) {
       merged.metadata.erase(key);
       continue;
     }
     double total = 0;
-    for (const RenderFile& part : parts) total += number_of(part, key);
+    for (const RenderFile& part : parts) total += metadata_number(part, key);
     // Counts stay integers; seconds keep render's six decimals.
     merged.metadata[key] =
         std::string(key) == "caustica:seconds" ? std::to_string(total) : std::to_string(uint64_t(total + 0.5));

@@ -19,6 +19,14 @@ struct RenderFile {
 // Reads a render's EXR with its metadata.
 RenderFile read_render(const std::string& path);
 
+// A metadata value, or "" if the render has none.
+std::string metadata_value(const RenderFile& render, const std::string& key);
+// A metadata value that must be a number; throws naming the file if not.
+double metadata_number(const RenderFile& render, const std::string& key);
+// Throws std::invalid_argument naming `part` unless it has the size,
+// channels, scene and integrator of `first`.
+void check_same_render(const RenderFile& first, const RenderFile& part);
+
 // The seeds a render's samples came from: its caustica:seed, or for a merged
 // render the list in caustica:seeds. Empty if the metadata names none.
 std::vector<std::string> render_seeds(const RenderFile& render);

@@ -25,6 +25,8 @@ class Properties {
   void add_child(ObjectValue child, const SourceLocation& where);
 
   const PluginInfo& info() const { return *info_; }
+  // The values set, in the order they were given.
+  const std::vector<std::pair<std::string, PropertyValue>>& values() const { return values_; }
   const SourceLocation& where() const { return where_; }
   bool has(const std::string& name) const { return find(name) != nullptr; }
 

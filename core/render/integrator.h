@@ -1,50 +1,82 @@
 #pragma once
 
-#include <span>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/film/film_buffer.h"
 #include "core/film/splat_list.h"
-#include "core/geometry/ray.h"
 #include "core/registry/plugin.h"
-#include "core/sampling/sampler.h"
 
 namespace caustica {
 
 class Scene;
+struct RenderProgress;
 
-// An estimator of the pixel measurement. Each camera sample writes its
-// estimate for its own pixel; integrators that trace light from the
-// emitters (ptracer, bdpt) also add splats for wherever their connections to
-// the camera land.
+// What one pass of a render covers: sample indices [first, first + count)
+// of every pixel (iterations, for iterative integrators), all within pass
+// number `pass` of the schedule (core/render/pass_schedule.h).
+struct PassRange {
+  uint32_t pass = 0;
+  uint64_t first = 0;
+  uint32_t count = 0;
+};
+
+// Where a pass's values go and what it may use.
+struct PassTarget {
+  FilmBuffer& film;
+  FilmBuffer* aovs;  // the standard first-hit layers, or null
+  RenderProgress* progress;
+  int threads;
+};
+
+// One sample's output before it reaches the film, for replaying it alone.
+struct ReplayedSample {
+  std::vector<float> values;
+  SplatList splats;
+};
+
+// The state of one render of an integrator over one scene, made for that
+// render (so a loaded scene and its integrator stay const, and two renders
+// of one scene can run at once), with its family's loop.
+class IntegratorRun {
+ public:
+  virtual ~IntegratorRun() = default;
+  // The most samples per pixel (or iterations) one pass may hold:
+  // progressive methods that refine between passes ask for few.
+  virtual uint32_t max_pass_samples() const { return 16; }
+  virtual void run_pass(PassRange range, const PassTarget& target) = 0;
+  // Called once the passes are done.
+  virtual void finish(FilmBuffer&) {}
+  // Whether the film's per-pixel variance describes the estimate: not where
+  // a pixel's light comes from other pixels' samples or from state kept
+  // across iterations.
+  virtual bool variance_known() const { return true; }
+  // Runs sample `index` of `pixel` alone, as the render ran it.
+  virtual ReplayedSample replay(Vec2i pixel, uint64_t index) = 0;
+  // What this render did that the integrator's parameters do not say
+  // ("rounds=12", "photon pass skipped"), for the metadata; may be empty.
+  virtual std::string summary() const { return ""; }
+};
+
+// A named light-transport algorithm. It belongs to one of three families,
+// each with its own loop (core/render/{pixel,light_path,iterative}_integrator.h):
+// per-pixel estimators, light-path integrators that splat, and iterative
+// density estimators. Every value reaches the film through
+// FilmBuffer::add_sample or a SplatList, which drop and count non-finite
+// values.
 class Integrator : public Plugin {
  public:
-  // Work that precedes the pixels.
-  virtual void prepare(const Scene&) {}
-  // Called before each pass over the pixels (the `pass`-th, from 0), e.g. to
-  // trace a progressive round of photons; `seed` is the render's.
-  virtual void begin_pass(const Scene&, uint32_t /*pass*/, uint64_t /*seed*/) {}
-  // The most samples per pixel one pass may hold: progressive methods that
-  // refine between passes ask for few.
-  virtual uint32_t max_pass_samples() const { return 16; }
-  // Called once the passes are done: integrators that keep state per pixel
-  // rather than averaging samples put their image into the film here.
-  virtual void finish(const Scene&, FilmBuffer&) const {}
+  // Names of the values a sample writes, in order; "R", "G", "B" for radiance.
+  virtual std::vector<std::string> channels() const { return {"R", "G", "B"}; }
   // What it will do with this scene and what it skips as the scene does not
   // need it, in a line or two; for `caustica info` and the render log.
   virtual std::string plan(const Scene&) const { return ""; }
-  // Names of the values sample() writes, in order; "R", "G", "B" for radiance.
-  virtual std::vector<std::string> channels() const { return {"R", "G", "B"}; }
-  // Whether sample() adds splats; the renderer then keeps a splat image.
-  virtual bool splats() const { return false; }
-  // Estimates the channels along one camera ray. Splats carry the same
-  // normalisation as `out`: the film divides their sum by the number of
-  // samples per pixel.
-  virtual void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out,
-                      SplatList& splats) const = 0;
   // Parameters as written back into the output's metadata.
   virtual std::string describe() const = 0;
+  // Starts a render of `scene` with the render's seed.
+  virtual std::unique_ptr<IntegratorRun> start(const Scene& scene, uint64_t seed) const = 0;
 };
 
 }  // namespace caustica

@@ -2,19 +2,19 @@
 
 #include <atomic>
 #include <cstdint>
-#include <span>
 #include <string>
-#include <vector>
 
 #include "core/film/film_buffer.h"
-#include "core/film/splat_list.h"
+#include "core/render/integrator.h"
+#include "core/render/standard_aovs.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
 
 struct RenderOptions {
-  uint32_t spp = 0;       // 0: the scene sampler's sample_count
-  double time_limit = 0;  // seconds; when positive, render passes until it is spent
+  uint32_t spp = 0;           // 0: the scene sampler's sample_count
+  uint64_t first_sample = 0;  // the first sample index rendered
+  double time_limit = 0;      // seconds; when positive, render passes until it is spent
   uint64_t seed = 0;
   int threads = 0;  // 0: all cores
   // Checked between passes: once it is true the render stops there (after
@@ -22,13 +22,6 @@ struct RenderOptions {
   // number of samples.
   const std::atomic<bool>* stop = nullptr;
 };
-
-// The first-hit layers written beside the beauty (albedo, shading normal,
-// depth). They are estimated from the first kAovSamples samples of each
-// pixel only: noise-free values converge within a few samples, and the
-// extra ray per sample then costs nothing at high sample counts.
-inline constexpr uint32_t kAovSamples = 16;
-std::vector<std::string> standard_aov_channels();
 
 // Shared with a progress display while a render runs.
 struct RenderProgress {
@@ -44,24 +37,22 @@ struct RenderStats {
   uint64_t dropped = 0;
   SampleId first_dropped;
   bool interrupted = false;
+  bool variance_known = true;  // whether the film's variance describes the estimate
+  std::string summary;         // what the render did beyond its parameters (IntegratorRun::summary)
 };
 
-// Renders the scene's integrator over the whole film in passes of whole
-// samples per pixel, tiles in parallel. Pixel p's sample i always uses the
-// random numbers keyed by (seed, p, i) and enters the film in index order,
-// so the image is bit-identical for any thread count. `aovs`, if given,
-// receives the standard_aov_channels().
-RenderStats render(const Scene& scene, const RenderOptions& options, FilmBuffer& film, FilmBuffer* aovs = nullptr,
-                   RenderProgress* progress = nullptr);
-
-// One sample's output before it reaches the film.
-struct ReplayedSample {
-  std::vector<float> values;
-  SplatList splats;
-};
+// Renders `integrator` over `scene` in passes (core/render/pass_schedule.h)
+// of sample indices first_sample, first_sample + 1, ...; the integrator's
+// family runs each pass. Sample i of pixel p always uses the random numbers
+// keyed by (seed, stream, p, i) and enters the film in index order, so the
+// image is bit-identical for any thread count. `aovs`, if given, receives
+// the standard_aov_channels().
+RenderStats render(const Scene& scene, const Integrator& integrator, const RenderOptions& options, FilmBuffer& film,
+                   FilmBuffer* aovs = nullptr, RenderProgress* progress = nullptr);
 
 // Runs one sample alone: a sample replayed under a debugger takes exactly
 // the path it took in the render.
-ReplayedSample replay_sample(const Scene& scene, Vec2i pixel, uint64_t index, uint64_t seed);
+ReplayedSample replay_sample(const Scene& scene, const Integrator& integrator, Vec2i pixel, uint64_t index,
+                             uint64_t seed);
 
 }  // namespace caustica

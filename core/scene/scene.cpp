@@ -3,11 +3,10 @@
 namespace caustica {
 
 Scene::Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared_ptr<Emitter>> emitters,
-             std::shared_ptr<Sensor> sensor, std::shared_ptr<Integrator> integrator, std::string source)
+             std::shared_ptr<Sensor> sensor, std::string source)
     : shapes_(std::move(shapes)),
       emitters_(std::move(emitters)),
       sensor_(std::move(sensor)),
-      integrator_(std::move(integrator)),
       source_(std::move(source)) {
   for (const auto& s : shapes_) bounds_.expand(s->bounds());
   for (const auto& e : emitters_) {

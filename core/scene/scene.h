@@ -8,22 +8,22 @@
 #include <vector>
 
 #include "core/camera/sensor.h"
-#include "core/color/tone_operator.h"
 #include "core/geometry/embree_scene.h"
 #include "core/geometry/ray_log.h"
 #include "core/lights/emitter.h"
-#include "core/render/integrator.h"
 #include "core/render/light_selection.h"
 #include "core/scene/scene_features.h"
 #include "core/shapes/shape.h"
 
 namespace caustica {
 
-// Everything a render needs, built by the scene loader.
+// What a scene file describes to be rendered: shapes, emitters, the sensor
+// with its film and sampler, and what the scene analysis found. How it is
+// rendered (the integrator, the tone mapping) is the render job's business.
 class Scene {
  public:
   Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared_ptr<Emitter>> emitters,
-        std::shared_ptr<Sensor> sensor, std::shared_ptr<Integrator> integrator, std::string source);
+        std::shared_ptr<Sensor> sensor, std::string source);
 
   std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
     ++rays_traced_.local();
@@ -48,11 +48,6 @@ class Scene {
   const std::vector<const Emitter*>& infinite_emitters() const { return infinite_; }
   const LightSelection& light_selection() const { return *lights_; }
   const Sensor& sensor() const { return *sensor_; }
-  const std::shared_ptr<Integrator>& integrator() const { return integrator_; }
-  void set_integrator(std::shared_ptr<Integrator> integrator) { integrator_ = std::move(integrator); }
-  // The scene's <tonemap>, or null: how its render is developed for display.
-  const std::shared_ptr<ToneOperator>& tone_operator() const { return tone_operator_; }
-  void set_tone_operator(std::shared_ptr<ToneOperator> op) { tone_operator_ = std::move(op); }
   const Bounds3& bounds() const { return bounds_; }
   // What the scene calls for (analyze_scene), set by the loader.
   const SceneFeatures& features() const { return features_; }
@@ -64,8 +59,6 @@ class Scene {
   std::vector<std::shared_ptr<Emitter>> emitters_;
   std::vector<const Emitter*> infinite_;
   std::shared_ptr<Sensor> sensor_;
-  std::shared_ptr<Integrator> integrator_;
-  std::shared_ptr<ToneOperator> tone_operator_;
   std::string source_;
   Bounds3 bounds_;
   SceneFeatures features_;

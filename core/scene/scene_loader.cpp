@@ -68,6 +68,7 @@ class Instantiator {
   }
 
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
+  GivenValues integrator_values;                   // what the last <integrator> built was given
   int textures = 0;                                // texture plugins built, for the scene features
 
  private:
@@ -102,6 +103,7 @@ class Instantiator {
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
     if (node.tag == "emitter") emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
     if (node.tag == "texture") ++textures;
+    if (node.tag == "integrator") integrator_values = props.values();
     return {node.tag, plugin};
   }
 
@@ -149,7 +151,7 @@ class Instantiator {
   std::set<std::string> building_;
 };
 
-std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& source) {
+LoadedScene instantiate(const XmlNode& root, const std::string& source) {
   Instantiator inst(root);
   std::vector<std::shared_ptr<Shape>> shapes;
   std::shared_ptr<Sensor> sensor;
@@ -177,25 +179,23 @@ std::unique_ptr<Scene> instantiate(const XmlNode& root, const std::string& sourc
   }
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
-  auto scene = std::make_unique<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor),
-                                       std::move(integrator), source);
-  scene->set_tone_operator(std::move(tone_operator));
+  auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   scene->set_features(analyze_scene(*scene, inst.textures > 0));
-  return scene;
+  return {std::move(scene), std::move(integrator), std::move(inst.integrator_values), std::move(tone_operator)};
 }
 
 }  // namespace
 
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const Defines& defines) {
+LoadedScene load_scene(const std::filesystem::path& file, const Defines& defines) {
   return instantiate(read_scene_xml(file, defines), file.string());
 }
 
-std::unique_ptr<Scene> load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
-                                         const Defines& defines) {
+LoadedScene load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
+                              const Defines& defines) {
   return instantiate(read_scene_xml_string(xml, file_for_messages, defines), file_for_messages.string());
 }
 
-std::shared_ptr<Integrator> make_integrator(const std::string& spec) {
+std::shared_ptr<Integrator> make_integrator(const std::string& spec, const GivenValues& inherited) {
   const size_t colon = spec.find(':');
   const std::string name = spec.substr(0, colon);
   const PluginInfo* info = Registry::instance().find("integrator", name);
@@ -204,6 +204,7 @@ std::shared_ptr<Integrator> make_integrator(const std::string& spec) {
                                 "' (available: " + join_names(Registry::instance().names("integrator")) + ")");
   const SourceLocation where{"--integrator " + spec, 0};
   Properties props(*info, where);
+  std::set<std::string> named;
   if (colon != std::string::npos) {
     std::istringstream list(spec.substr(colon + 1));
     for (std::string item; std::getline(list, item, ',');) {
@@ -214,8 +215,11 @@ std::shared_ptr<Integrator> make_integrator(const std::string& spec) {
       // Unknown names fall through to set(), which lists what is accepted.
       const ValueKind kind = declared ? default_kind(declared->type) : ValueKind::String;
       props.set(param, parse_value_text(kind, item.substr(eq + 1), where));
+      named.insert(param);
     }
   }
+  for (const auto& [name, value] : inherited)
+    if (info->param(name) && !named.count(name)) props.set(name, value);
   return std::dynamic_pointer_cast<Integrator>(info->create(props));
 }
 

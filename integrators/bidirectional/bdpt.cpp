@@ -24,7 +24,8 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "core/render/integrator.h"
+#include "core/render/camera_sample.h"
+#include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
 #include "core/transport/emission.h"
@@ -50,7 +51,7 @@ uint32_t layer_channel(int s, int t) {
   return uint32_t(3 + 3 * ((k - 1) * (k + 2) / 2 + s));
 }
 
-class BidirectionalPathTracer final : public Integrator {
+class BidirectionalPathTracer final : public LightPathIntegrator {
  public:
   explicit BidirectionalPathTracer(const Properties& props)
       : settings_(read_path_settings(props)),
@@ -58,8 +59,6 @@ class BidirectionalPathTracer final : public Integrator {
         layers_(int(props.get_int("strategy_layers"))) {
     if (layers_ < 0 || layers_ > 12) throw props.error("strategy_layers", "must be between 0 and 12");
   }
-
-  bool splats() const override { return true; }
 
   std::vector<std::string> channels() const override {
     std::vector<std::string> names{"R", "G", "B"};
@@ -72,11 +71,14 @@ class BidirectionalPathTracer final : public Integrator {
     return names;
   }
 
-  void sample(const Scene& scene, const Ray& ray, Sampler& sampler, std::span<float> out,
-              SplatList& splats) const override {
+  // The camera subpath starts from the pixel's camera stream and the light
+  // subpath continues in it.
+  float sample(const Scene& scene, SampleId id, uint64_t seed, Sampler& sampler, std::span<float> out,
+               SplatList& splats) const override {
     std::fill(out.begin(), out.end(), 0.0f);
     thread_local std::vector<PathVertex> camera, light;
-    trace_camera_subpath(scene, ray, sampler, settings_, camera);
+    const CameraSample cs = sample_camera_ray(scene, sampler, id.pixel, id.index, seed);
+    trace_camera_subpath(scene, cs.ray, sampler, settings_, camera);
     compute_densities(scene, camera);
     trace_light_subpath(scene, sampler, settings_, light);
     compute_densities(scene, light);
@@ -100,6 +102,7 @@ class BidirectionalPathTracer final : public Integrator {
           if (layer) add(out, layer_channel(s, t), value);
         }
       }
+    return cs.weight;
   }
 
   std::string plan(const Scene& scene) const override {

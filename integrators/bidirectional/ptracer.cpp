@@ -1,7 +1,7 @@
 // ptracer: light tracing (particle tracing). Each sample traces one path
 // from an emitter (chosen by power) with importance-mode BSDFs and joins
-// every vertex to the camera, splatting the contribution where it lands;
-// the camera ray of the sample is not used. It renders caustics seen
+// every vertex to the camera, splatting the contribution where it lands.
+// A sample's light path comes from its pixel's light-path stream. It renders caustics seen
 // directly well, but nothing seen through a delta surface (a mirror or
 // smooth glass between the camera and the first diffuse or glossy surface):
 // such paths cannot be joined to a pinhole.
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/registry/properties.h"
-#include "core/render/integrator.h"
+#include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
 #include "integrators/bidirectional/camera_connection.h"
@@ -26,19 +26,19 @@
 namespace caustica {
 namespace {
 
-class ParticleTracer final : public Integrator {
+class ParticleTracer final : public LightPathIntegrator {
  public:
   explicit ParticleTracer(const Properties& props) : settings_(read_path_settings(props)) {}
 
-  bool splats() const override { return true; }
-
-  void sample(const Scene& scene, const Ray&, Sampler& sampler, std::span<float> out,
-              SplatList& splats) const override {
+  float sample(const Scene& scene, SampleId id, uint64_t seed, Sampler& sampler, std::span<float> out,
+               SplatList& splats) const override {
     std::fill(out.begin(), out.end(), 0.0f);
+    sampler.start_sample(SampleKey::light_path(id.pixel), id.index, seed);
     thread_local std::vector<PathVertex> light;
     trace_light_subpath(scene, sampler, settings_, light);
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
       if (const auto c = connect_to_camera(scene, light, s, sampler)) splats.add(c->raster, c->value);
+    return 1;
   }
 
   std::string describe() const override { return caustica::describe("ptracer", settings_); }

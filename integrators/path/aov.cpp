@@ -18,7 +18,7 @@
 
 #include "core/registry/properties.h"
 #include "core/render/aov_evaluator.h"
-#include "core/render/integrator.h"
+#include "core/render/pixel_integrator.h"
 
 namespace caustica {
 namespace {
@@ -31,14 +31,24 @@ std::vector<AovSpec> read_aovs(const Properties& props) {
   }
 }
 
-class AovIntegrator final : public Integrator {
+class AovEstimator final : public PixelEstimator {
+ public:
+  AovEstimator(const AovEvaluator& evaluator, const Scene& scene) : evaluator_(evaluator), scene_(scene) {}
+  void sample(const Ray& ray, Sampler&, std::span<float> out) const override { evaluator_.evaluate(scene_, ray, out); }
+
+ private:
+  const AovEvaluator& evaluator_;
+  const Scene& scene_;
+};
+
+class AovIntegrator final : public PixelIntegrator {
  public:
   explicit AovIntegrator(const Properties& props) : evaluator_(read_aovs(props)), text_(props.get_string("aovs")) {}
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
 
-  void sample(const Scene& scene, const Ray& ray, Sampler&, std::span<float> out, SplatList&) const override {
-    evaluator_.evaluate(scene, ray, out);
+  std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t) const override {
+    return std::make_unique<AovEstimator>(evaluator_, scene);
   }
 
   std::string describe() const override { return "aov aovs=" + text_; }

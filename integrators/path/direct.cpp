@@ -13,7 +13,7 @@
 #include "core/bsdf/surface_bsdf.h"
 #include "core/registry/properties.h"
 #include "core/render/direct_light.h"
-#include "core/render/radiance_integrator.h"
+#include "core/render/pixel_integrator.h"
 #include "core/scene/scene.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"

@@ -20,7 +20,7 @@
 
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
-#include "core/render/radiance_integrator.h"
+#include "core/render/pixel_integrator.h"
 #include "core/scene/scene.h"
 #include "integrators/path/path_tracing.h"
 

@@ -28,7 +28,7 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
-#include "core/render/radiance_integrator.h"
+#include "core/render/pixel_integrator.h"
 #include "core/scene/scene.h"
 #include "integrators/path/path_tracing.h"
 #include "integrators/photon/photon_density.h"
@@ -55,7 +55,35 @@ class CausticGather final : public CausticEstimator {
   int64_t max_depth_;
 };
 
-class PhotonIntegrator final : public RadianceIntegrator {
+class PhotonIntegrator;
+
+// One render's photon rounds: the map of the current pass's round, or
+// nothing when the scene cannot have caustic paths.
+class CausticRounds final : public PixelEstimator {
+ public:
+  CausticRounds(const PhotonIntegrator& settings, const Scene& scene, uint64_t seed);
+
+  // Without photons there is nothing to refine between passes.
+  uint32_t max_pass_samples() const override;
+  void begin_pass(uint32_t pass) override;
+  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
+  std::string summary() const override {
+    return enabled_ ? "rounds=" + std::to_string(rounds_) : "(photon pass skipped)";
+  }
+
+ private:
+  const PhotonIntegrator& settings_;
+  const Scene& scene_;
+  uint64_t seed_;
+  bool enabled_;
+  float initial_radius_;
+  std::optional<uint32_t> round_;
+  uint32_t rounds_ = 0;
+  PhotonMap map_;
+  std::optional<CausticGather> gather_;
+};
+
+class PhotonIntegrator final : public PixelIntegrator {
  public:
   explicit PhotonIntegrator(const Properties& props)
       : settings_(read_path_settings(props)),
@@ -70,26 +98,8 @@ class PhotonIntegrator final : public RadianceIntegrator {
       throw props.error("samples_per_round", "must be between 1 and 1024");
   }
 
-  void prepare(const Scene& scene) override {
-    enabled_ = scene.features().caustic_paths;
-    const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
-    initial_radius_ = radius_ > 0 ? radius_ : std::max(length(diagonal) / 200, 1e-6f);
-    rounds_ = 0;
-  }
-
-  // Without photons there is nothing to refine between passes.
-  uint32_t max_pass_samples() const override { return enabled_ ? uint32_t(samples_per_round_) : 16; }
-
-  void begin_pass(const Scene& scene, uint32_t pass, uint64_t seed) override {
-    rounds_ = pass + 1;
-    if (!enabled_) return;
-    map_ = PhotonMap(trace_photons(scene, PhotonPaths::Caustic, uint64_t(photons_), pass, seed, settings_),
-                     round_radius(pass));
-    gather_.emplace(map_, uint64_t(photons_), settings_.max_depth);
-  }
-
-  Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    return trace_path(scene, ray, sampler, settings_, enabled_ ? &*gather_ : nullptr);
+  std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t seed) const override {
+    return std::make_unique<CausticRounds>(*this, scene, seed);
   }
 
   std::string plan(const Scene& scene) const override {
@@ -103,14 +113,15 @@ class PhotonIntegrator final : public RadianceIntegrator {
   std::string describe() const override {
     return caustica::describe("photon", settings_) + " photons=" + std::to_string(photons_) +
            " radius=" + std::to_string(radius_) + " alpha=" + std::to_string(alpha_) +
-           " samples_per_round=" + std::to_string(samples_per_round_) + " rounds=" + std::to_string(rounds_) +
-           (enabled_ ? "" : " (photon pass skipped)");
+           " samples_per_round=" + std::to_string(samples_per_round_);
   }
 
  private:
+  friend class CausticRounds;
+
   // r_i^2 = r_0^2 prod_{k=1}^{i} (k + alpha) / (k + 1)  (Knaus and Zwicker 2011, eq. 20)
-  float round_radius(uint32_t round) const {
-    double r2 = double(initial_radius_) * initial_radius_;
+  float round_radius(float initial_radius, uint32_t round) const {
+    double r2 = double(initial_radius) * initial_radius;
     for (uint32_t k = 1; k <= round; ++k) r2 *= (k + alpha_) / (k + 1.0);
     return float(std::sqrt(r2));
   }
@@ -119,12 +130,34 @@ class PhotonIntegrator final : public RadianceIntegrator {
   int64_t photons_;
   float radius_, alpha_;
   int64_t samples_per_round_;
-  bool enabled_ = false;
-  float initial_radius_ = 0;
-  uint32_t rounds_ = 0;
-  PhotonMap map_;
-  std::optional<CausticGather> gather_;
 };
+
+CausticRounds::CausticRounds(const PhotonIntegrator& settings, const Scene& scene, uint64_t seed)
+    : settings_(settings), scene_(scene), seed_(seed), enabled_(scene.features().caustic_paths) {
+  const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
+  initial_radius_ = settings.radius_ > 0 ? settings.radius_ : std::max(length(diagonal) / 200, 1e-6f);
+}
+
+uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(settings_.samples_per_round_) : 16; }
+
+// A pass's round is its number in the schedule, so a sample's photons do
+// not depend on where the render of its range began.
+void CausticRounds::begin_pass(uint32_t pass) {
+  if (!enabled_ || round_ == pass) return;
+  round_ = pass;
+  ++rounds_;
+  const uint64_t photons = uint64_t(settings_.photons_);
+  map_ = PhotonMap(trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_),
+                   settings_.round_radius(initial_radius_, pass));
+  gather_.emplace(map_, photons, settings_.settings_.max_depth);
+}
+
+void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {
+  const Color L = trace_path(scene_, ray, sampler, settings_.settings_, enabled_ ? &*gather_ : nullptr);
+  out[0] = L.r;
+  out[1] = L.g;
+  out[2] = L.b;
+}
 
 }  // namespace
 

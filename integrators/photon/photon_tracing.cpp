@@ -47,7 +47,7 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const 
 
 }  // namespace
 
-std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint32_t round, uint64_t seed,
+std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
                                   const PathSettings& settings) {
   const size_t blocks = size_t((count + kBlock - 1) / kBlock);
   std::vector<std::vector<Photon>> found(blocks);

@@ -26,7 +26,7 @@ enum class PhotonPaths {
 // (seed, round, i) and blocks of photons are joined in order, so the result
 // is the same for any thread count. Photons whose paths could not reach the
 // camera within settings.max_depth are not kept.
-std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint32_t round, uint64_t seed,
+std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
                                   const PathSettings& settings);
 
 }  // namespace caustica

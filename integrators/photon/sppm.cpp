@@ -7,8 +7,10 @@
 // statistics: N <- N + alpha M, R <- R sqrt(N_new / (N + M)) and
 // tau <- (tau + Phi) R_new^2 / R^2, so its radius shrinks where photons are
 // dense and the estimate converges as iterations add up. The image is
-// D / n + tau / (n photons pi R^2) per pixel after n iterations; the film's
-// samples carry nothing, and the filter only places the camera rays.
+// D / n + tau / (n photons pi R^2) per pixel after n iterations, which
+// enters the film once the iterations are done; the filter only places the
+// camera rays. The camera walk through delta bounces has the walks'
+// Russian roulette.
 // Photon rounds and the camera pass run in parallel and are deterministic
 // for a seed.
 //
@@ -33,7 +35,7 @@
 #include "core/registry/properties.h"
 #include "core/render/camera_sample.h"
 #include "core/render/direct_light.h"
-#include "core/render/integrator.h"
+#include "core/render/iterative_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
 #include "core/transport/emission.h"
@@ -93,7 +95,28 @@ class VisiblePoint {
   PixelState& px_;
 };
 
-class StochasticProgressivePhotonMapping final : public Integrator {
+class StochasticProgressivePhotonMapping;
+
+// One render's per-pixel statistics.
+class SppmPixels final : public IterationState {
+ public:
+  SppmPixels(const StochasticProgressivePhotonMapping& settings, const Scene& scene, uint64_t seed);
+  void iterate(uint64_t iteration) override;
+  Color estimate(Vec2i pixel) const override;
+  std::string summary() const override { return "iterations=" + std::to_string(iterations_); }
+
+ private:
+  void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration);
+
+  const StochasticProgressivePhotonMapping& settings_;
+  const Scene& scene_;
+  uint64_t seed_;
+  int width_;
+  std::vector<PixelState> pixels_;
+  uint64_t iterations_ = 0;
+};
+
+class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
  public:
   explicit StochasticProgressivePhotonMapping(const Properties& props)
       : settings_(read_path_settings(props)),
@@ -105,46 +128,8 @@ class StochasticProgressivePhotonMapping final : public Integrator {
     if (!(alpha_ > 0 && alpha_ < 1)) throw props.error("alpha", "must be in (0, 1)");
   }
 
-  void prepare(const Scene& scene) override {
-    const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
-    const float r0 = radius_ > 0 ? radius_ : std::max(length(diagonal) / 200, 1e-6f);
-    width_ = scene.sensor().film()->width();
-    pixels_.assign(size_t(width_) * scene.sensor().film()->height(), PixelState{{}, {}, 0, r0});
-    iterations_ = 0;
-  }
-
-  uint32_t max_pass_samples() const override { return 1; }
-
-  void begin_pass(const Scene& scene, uint32_t pass, uint64_t seed) override {
-    float max_radius = 0;
-    for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
-    const PhotonMap map(trace_photons(scene, PhotonPaths::Indirect, uint64_t(photons_), pass, seed, settings_),
-                        max_radius);
-    const int height = int(pixels_.size() / size_t(width_));
-    tbb::parallel_for(0, height, [&](int y) {
-      auto sampler = scene.sensor().sampler()->clone();
-      for (int x = 0; x < width_; ++x) iterate_pixel(scene, map, *sampler, {x, y}, pass, seed);
-    });
-    iterations_ = pass + 1;
-  }
-
-  void sample(const Scene&, const Ray&, Sampler&, std::span<float> out, SplatList&) const override {
-    std::fill(out.begin(), out.end(), 0.0f);
-  }
-
-  void finish(const Scene&, FilmBuffer& film) const override {
-    if (iterations_ == 0) return;
-    std::vector<float> image(pixels_.size() * 3);
-    const double emitted = double(iterations_) * double(photons_);
-    for (size_t p = 0; p < pixels_.size(); ++p) {
-      const PixelState& px = pixels_[p];
-      const Color L =
-          px.direct / float(iterations_) + px.tau / float(emitted * kPi * double(px.radius) * double(px.radius));
-      image[p * 3] = L.r;
-      image[p * 3 + 1] = L.g;
-      image[p * 3 + 2] = L.b;
-    }
-    film.set_image(std::move(image));
+  std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
+    return std::make_unique<SppmPixels>(*this, scene, seed);
   }
 
   std::string plan(const Scene&) const override {
@@ -155,33 +140,58 @@ class StochasticProgressivePhotonMapping final : public Integrator {
 
   std::string describe() const override {
     return caustica::describe("sppm", settings_) + " photons=" + std::to_string(photons_) +
-           " radius=" + std::to_string(radius_) + " alpha=" + std::to_string(alpha_) +
-           " iterations=" + std::to_string(iterations_);
+           " radius=" + std::to_string(radius_) + " alpha=" + std::to_string(alpha_);
   }
 
  private:
-  void iterate_pixel(const Scene& scene, const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint32_t pass,
-                     uint64_t seed) {
-    PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
-    const CameraSample cs = sample_camera_ray(scene, sampler, pixel, pass, seed);
-    VisiblePoint visible(scene, map, sampler, settings_, px);
-    random_walk(scene, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_), sampler, visible);
-    if (visible.photons > 0) {
-      const double n_new = px.n + alpha_ * visible.photons;
-      const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2
-      px.tau = (px.tau + visible.flux) * float(shrink2);
-      px.radius = float(px.radius * std::sqrt(shrink2));
-      px.n = n_new;
-    }
-  }
-
+  friend class SppmPixels;
   PathSettings settings_;
   int64_t photons_;
   float radius_, alpha_;
-  int width_ = 0;
-  std::vector<PixelState> pixels_;
-  uint32_t iterations_ = 0;
 };
+
+SppmPixels::SppmPixels(const StochasticProgressivePhotonMapping& settings, const Scene& scene, uint64_t seed)
+    : settings_(settings), scene_(scene), seed_(seed), width_(scene.sensor().film()->width()) {
+  const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
+  const float r0 = settings.radius_ > 0 ? settings.radius_ : std::max(length(diagonal) / 200, 1e-6f);
+  pixels_.assign(size_t(width_) * scene.sensor().film()->height(), PixelState{{}, {}, 0, r0});
+}
+
+void SppmPixels::iterate(uint64_t iteration) {
+  float max_radius = 0;
+  for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
+  const PhotonMap map(
+      trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photons_), iteration, seed_, settings_.settings_),
+      max_radius);
+  const int height = int(pixels_.size() / size_t(width_));
+  tbb::parallel_for(0, height, [&](int y) {
+    auto sampler = scene_.sensor().sampler()->clone();
+    for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration);
+  });
+  ++iterations_;
+}
+
+// D / n + tau / (n photons pi R^2).
+Color SppmPixels::estimate(Vec2i pixel) const {
+  const PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
+  const double emitted = double(iterations_) * double(settings_.photons_);
+  return px.direct / float(iterations_) + px.tau / float(emitted * kPi * double(px.radius) * double(px.radius));
+}
+
+void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration) {
+  PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
+  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
+  VisiblePoint visible(scene_, map, sampler, settings_.settings_, px);
+  random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,
+              visible);
+  if (visible.photons > 0) {
+    const double n_new = px.n + settings_.alpha_ * visible.photons;
+    const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2
+    px.tau = (px.tau + visible.flux) * float(shrink2);
+    px.radius = float(px.radius * std::sqrt(shrink2));
+    px.n = n_new;
+  }
+}
 
 }  // namespace
 

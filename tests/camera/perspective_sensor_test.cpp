@@ -9,7 +9,7 @@
 namespace caustica {
 namespace {
 
-std::unique_ptr<Scene> camera_scene(const std::string& axis, int w, int h) {
+LoadedScene camera_scene(const std::string& axis, int w, int h) {
   return test::scene_from_xml(
       "<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='50'/>"
       "<string name='fov_axis' value='" +

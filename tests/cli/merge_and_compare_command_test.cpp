@@ -97,5 +97,39 @@ TEST_F(MergeAndCompare, CompareRejectsImagesOfAnotherSize) {
   EXPECT_THAT(r.output, HasSubstr("caustica: error: the image is 9x9 but the reference is 8x8"));
 }
 
+// Two renders of one seed over disjoint --first-sample ranges, merged from
+// their raw sums, are the one render of all their samples, pixel for pixel.
+TEST_F(MergeAndCompare, RangesOfOneSeedMergeIntoTheRenderOfTheirUnion) {
+  const std::string scene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml";
+  const auto render = [&](const std::string& name, const std::string& range) {
+    const std::string out = (dir() / name).string();
+    const test::CommandResult r =
+        run_caustica("render " + scene + " -o " + out + " -D res=8 --threads 2 -q --seed 5 --raw-sums " + range);
+    EXPECT_EQ(r.status, 0) << r.output;
+    return out;
+  };
+  const std::string whole = render("whole.exr", "--spp 7");
+  const std::string first = render("first.exr", "--spp 3"), rest = render("rest.exr", "--first-sample 3 --spp 4");
+  const std::string merged = (dir() / "ranges.exr").string();
+  const test::CommandResult r = run_caustica("merge " + rest + " " + first + " -o " + merged);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::map<std::string, std::string> merged_meta, whole_meta;
+  const Image a = read_image(merged, &merged_meta), b = read_image(whole, &whole_meta);
+  ASSERT_EQ(a.channels, b.channels);
+  // The images; the raw sums themselves may differ in their last bits, as
+  // their doubles were added in another order.
+  size_t compared = 0;
+  for (size_t c = 0; c < a.channels.size(); ++c) {
+    if (a.channels[c].rfind("raw.", 0) == 0) continue;
+    ++compared;
+    for (size_t i = c; i < a.pixels.size(); i += a.channels.size())
+      ASSERT_EQ(a.pixels[i], b.pixels[i]) << a.channels[c] << " of pixel " << i / a.channels.size();
+  }
+  EXPECT_EQ(compared, 14u);  // R, G, B, albedo.*, normal.*, depth.T, variance.*, samples.Y
+  EXPECT_EQ(merged_meta["caustica:ranges"], "0-2,3-6");
+  EXPECT_EQ(merged_meta["caustica:spp"], "7");
+  EXPECT_EQ(whole_meta["caustica:first_sample"], "0");
+}
+
 }  // namespace
 }  // namespace caustica

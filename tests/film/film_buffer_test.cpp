@@ -50,7 +50,7 @@ TEST(FilmBuffer, ConstantImageStaysConstant) {
                     "</emitter><sensor type='perspective'><film type='hdrfilm'><integer name='width' value='9'/>"
                     "<integer name='height' value='7'/><rfilter type='") +
         filter + "'/></film></sensor></scene>");
-    const auto img = test::render_scene(*scene, 5).resolve();
+    const auto img = test::render_scene(scene, 5).resolve();
     for (size_t i = 0; i < img.size(); i += 3) {
       EXPECT_FLOAT_EQ(img[i], 0.25f) << filter;
       EXPECT_FLOAT_EQ(img[i + 1], 0.5f) << filter;

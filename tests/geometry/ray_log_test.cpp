@@ -12,11 +12,11 @@ TEST(RayLog, RecordsEveryRayARenderTraces) {
   const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "8"}});
   RayLog log;
   scene->set_ray_log(&log);
-  FilmBuffer film(8, 8, scene->integrator()->channels());
+  FilmBuffer film(8, 8, scene.integrator->channels());
   RenderOptions options;
   options.spp = 2;
   options.threads = 2;
-  const RenderStats stats = render(*scene, options, film);
+  const RenderStats stats = render(*scene, *scene.integrator, options, film);
   scene->set_ray_log(nullptr);
 
   const auto entries = log.entries();
@@ -26,7 +26,7 @@ TEST(RayLog, RecordsEveryRayARenderTraces) {
   EXPECT_GT(shadow, 0u);                           // next-event estimation
   EXPECT_GT(entries.size() - shadow, 8u * 8 * 2);  // camera rays and bounces
 
-  render(*scene, options, film);
+  render(*scene, *scene.integrator, options, film);
   EXPECT_EQ(log.entries().size(), entries.size());  // detached: nothing more is recorded
 }
 

@@ -16,12 +16,12 @@ TEST(AovIntegrator, AlbedoNormalDepthAtTheFirstHit) {
       "<film type='hdrfilm'><integer name='width' value='3'/><integer name='height' value='3'/>"
       "<rfilter type='box'/></film></sensor><shape type='rectangle'><bsdf type='diffuse'>"
       "<rgb name='reflectance' value='0.1, 0.2, 0.3'/></bsdf></shape></scene>");
-  const auto channels = scene->integrator()->channels();
+  const auto channels = scene.integrator->channels();
   ASSERT_EQ(channels.size(), 10u);
   EXPECT_EQ(channels[0], "a.R");
   EXPECT_EQ(channels[5], "n.Z");
   EXPECT_EQ(channels[6], "d.T");
-  const auto img = test::render_scene(*scene, 1).resolve();
+  const auto img = test::render_scene(scene, 1).resolve();
   const float* centre = &img[4 * 10];
   EXPECT_FLOAT_EQ(centre[0], 0.1f);
   EXPECT_FLOAT_EQ(centre[2], 0.3f);

@@ -58,7 +58,7 @@ MeanEstimate image_mean(const FilmBuffer& film) {
 
 void expect_radiance(const std::string& integrator, double expected, uint32_t spp, uint64_t seed) {
   const auto scene = test::scene_from_xml(sphere_scene(integrator, 1.0f, 0.5f));
-  const MeanEstimate m = image_mean(test::render_scene(*scene, spp, seed));
+  const MeanEstimate m = image_mean(test::render_scene(scene, spp, seed));
   // Where the estimator has (almost) no variance, single-precision rounding
   // dominates the error; it is allowed for as a relative 1e-5 spread.
   const double rounding = 1e-5 * expected;
@@ -86,7 +86,7 @@ TEST(ClosedSphere, PathWithoutRouletteMatchesTheTruncatedSeries) {
 TEST(ClosedSphere, MaxDepthOneSeesOnlyEmission) {
   const auto scene = test::scene_from_xml(
       sphere_scene("<integrator type='path'><integer name='max_depth' value='1'/></integrator>", 1.0f, 0.5f));
-  for (float v : test::render_scene(*scene, 2).resolve()) EXPECT_FLOAT_EQ(v, 1.0f);
+  for (float v : test::render_scene(scene, 2).resolve()) EXPECT_FLOAT_EQ(v, 1.0f);
 }
 
 TEST(ClosedSphere, DirectSeesOneBounce) {
@@ -97,7 +97,7 @@ TEST(ClosedSphere, DirectSeesOneBounce) {
 // Radiance rises fast with albedo near 1, where Russian roulette matters most.
 TEST(ClosedSphere, HighAlbedoStaysUnbiased) {
   const auto scene = test::scene_from_xml(sphere_scene("<integrator type='path'/>", 0.5f, 0.9f));
-  const MeanEstimate m = image_mean(test::render_scene(*scene, 64, 6));
+  const MeanEstimate m = image_mean(test::render_scene(scene, 64, 6));
   EXPECT_LT(std::abs(m.mean - 5.0) / m.standard_error, kZCritical) << m.mean << " +- " << m.standard_error;
 }
 
@@ -122,7 +122,7 @@ TEST(ClosedSphere, LightTracingAndBidirectionalAreUnbiased) {
   uint64_t seed = 100;
   for (const Case& c : cases) {
     const auto scene = test::scene_from_xml(sphere_scene(c.integrator, 1.0f, 0.5f));
-    const auto region = test::estimate_regions(*scene, {{{0, 0}, {24, 24}}}, c.spp, kRuns, seed += kRuns)[0];
+    const auto region = test::estimate_regions(scene, {{{0, 0}, {24, 24}}}, c.spp, kRuns, seed += kRuns)[0];
     const double score = test::difference_score(region, {c.expected, 0, 0});
     EXPECT_LT(std::abs(score), t_critical)
         << c.integrator << ": mean " << region.mean << " +- " << region.standard_error << ", expected " << c.expected;

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "core/registry/properties.h"
+#include "core/render/pixel_integrator.h"
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
@@ -45,14 +46,18 @@ std::unique_ptr<Sampler> sampler() {
 
 // Radiance leaving the plane at (x, y) toward a ray cast straight down from
 // just above it, estimated from n samples: mean and standard error.
-std::pair<double, double> estimate(const Scene& scene, float x, float y, int n) {
+// One estimate along `ray` by the scene file's per-pixel integrator.
+void sample_along(const LoadedScene& scene, const Ray& ray, Sampler& s, std::span<float> out) {
+  dynamic_cast<const PixelIntegrator&>(*scene.integrator).estimator(*scene, 0)->sample(ray, s, out);
+}
+
+std::pair<double, double> estimate(const LoadedScene& scene, float x, float y, int n) {
   auto s = sampler();
   double sum = 0, sum2 = 0;
   float out[3];
-  SplatList unused;
   for (int i = 0; i < n; ++i) {
     s->start_sample(SampleKey::camera({int(x * 100), int(y * 100)}), i, 0);
-    scene.integrator()->sample(scene, {{x, y, 0.01f}, {0, 0, -1}}, *s, out, unused);
+    sample_along(scene, {{x, y, 0.01f}, {0, 0, -1}}, *s, out);
     sum += out[0];
     sum2 += double(out[0]) * out[0];
   }
@@ -73,7 +78,7 @@ TEST(DirectLighting, SphereLightOnPlane) {
     for (const auto& p : kPoints) {
       const double d = std::sqrt(p[0] * p[0] + p[1] * p[1] + kHeight * kHeight);
       const double expected = kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
-      const auto [mean, se] = estimate(*scene, p[0], p[1], 20000);
+      const auto [mean, se] = estimate(scene, p[0], p[1], 20000);
       EXPECT_LT(std::abs(mean - expected) / se, z_critical)
           << integrator << " at (" << p[0] << ", " << p[1] << "): " << mean << " +- " << se << ", expected "
           << expected;
@@ -120,7 +125,7 @@ TEST(DirectLighting, SphereLightOnPlaneSeenByLightPaths) {
   uint64_t seed = 0;
   for (const auto& [integrator, spp] : integrators) {
     const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, sphere_light()));
-    const auto estimates = test::estimate_regions(*scene, regions, spp, kRuns, seed += kRuns);
+    const auto estimates = test::estimate_regions(scene, regions, spp, kRuns, seed += kRuns);
     for (size_t i = 0; i < regions.size(); ++i) {
       double expected = 0;
       const test::Region& g = regions[i];
@@ -146,7 +151,7 @@ TEST(DirectLighting, TinyFarSphereLight) {
   for (const auto& p : {std::array<float, 2>{0, 0}, std::array<float, 2>{30, 40}}) {
     const double d = std::sqrt(p[0] * p[0] + p[1] * p[1] + height * height);
     const double expected = kRho * Le * radius * radius * height / (d * d * d);
-    const auto [mean, se] = estimate(*scene, p[0], p[1], 4000);
+    const auto [mean, se] = estimate(scene, p[0], p[1], 4000);
     const double rounding = 1e-4 * expected;  // float geometry at this scale
     EXPECT_LT(std::abs(mean - expected) / std::sqrt(se * se + rounding * rounding), z_critical)
         << mean << " +- " << se << ", expected " << expected;
@@ -162,7 +167,7 @@ TEST(DirectLighting, PointLightIsExact) {
   for (const auto& p : kPoints) {
     const double d = std::sqrt(p[0] * p[0] + p[1] * p[1] + 1);
     const double expected = kRho * intensity / (M_PI * d * d * d);
-    const auto [mean, se] = estimate(*scene, p[0], p[1], 16);
+    const auto [mean, se] = estimate(scene, p[0], p[1], 16);
     EXPECT_NEAR(mean, expected, 1e-5 * expected);
     EXPECT_LT(se, 1e-6);
   }
@@ -174,13 +179,12 @@ TEST(DirectLighting, EmittersSeenDirectlyAndHidden) {
       "<integrator type='direct'><boolean name='hide_emitters' value='true'/></integrator>", sphere_light()));
   auto s = sampler();
   float out[3];
-  SplatList unused;
   const Ray down{{0, 0, 2}, {0, 0, -1}};
   s->start_sample(SampleKey::camera({0, 0}), 0, 0);
-  shown->integrator()->sample(*shown, down, *s, out, unused);
+  sample_along(shown, down, *s, out);
   EXPECT_FLOAT_EQ(out[0], kLe);
   s->start_sample(SampleKey::camera({0, 0}), 0, 0);
-  hidden->integrator()->sample(*hidden, down, *s, out, unused);
+  sample_along(hidden, down, *s, out);
   EXPECT_FLOAT_EQ(out[0], 0);
 }
 

@@ -48,7 +48,7 @@ TEST(EnvironmentLight, DiffusePlaneUnderUniformSky) {
   for (const auto& [integrator, spp] : integrators) {
     const auto scene = test::scene_from_xml(sky_scene(integrator));
     uint64_t non_finite = 0;
-    const auto estimates = test::estimate_regions(*scene, regions, spp, kRuns, seed += kRuns, &non_finite);
+    const auto estimates = test::estimate_regions(scene, regions, spp, kRuns, seed += kRuns, &non_finite);
     EXPECT_EQ(non_finite, 0u) << integrator;
     for (size_t i = 0; i < regions.size(); ++i)
       EXPECT_LT(std::abs(test::difference_score(estimates[i], {expected, 0, 0})), t_critical)

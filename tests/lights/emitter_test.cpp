@@ -11,7 +11,7 @@
 namespace caustica {
 namespace {
 
-std::unique_ptr<Scene> light_scene(const std::string& shape) {
+LoadedScene light_scene(const std::string& shape) {
   return test::scene_from_xml("<scene version='3.0.0'>" + shape + "</scene>");
 }
 

@@ -35,7 +35,7 @@ TEST_P(CornellVariant, FiniteAndAgreesWithTheReference) {
   const std::string name = GetParam();
   const auto scene =
       load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", std::to_string(kRes)}});
-  const FilmBuffer film = test::render_scene(*scene, kSpp, 1);
+  const FilmBuffer film = test::render_scene(scene, kSpp, 1);
   EXPECT_EQ(film.dropped_samples(), 0u);
   const auto img = film.resolve();
   for (float v : img) ASSERT_TRUE(std::isfinite(v)) << name;

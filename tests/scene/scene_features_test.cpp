@@ -15,7 +15,7 @@ namespace {
 
 using testing::HasSubstr;
 
-std::unique_ptr<Scene> cornell(const std::string& name) {
+LoadedScene cornell(const std::string& name) {
   return load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "8"}});
 }
 

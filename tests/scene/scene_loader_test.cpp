@@ -77,7 +77,7 @@ TEST(SceneLoader, EveryElementOfTheSubset) {
   EXPECT_FALSE(scene->sensor().film()->half_float());
   EXPECT_FLOAT_EQ(scene->sensor().film()->filter().radius(), 1.5f);
   EXPECT_EQ(scene->sensor().sampler()->sample_count(), 3u);
-  EXPECT_EQ(scene->integrator()->describe(), "path max_depth=7 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
+  EXPECT_EQ(scene.integrator->describe(), "path max_depth=7 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
   EXPECT_EQ(scene->shapes()[0]->bsdf(), scene->shapes()[3]->bsdf());  // one object through ref
   EXPECT_EQ(scene->shapes()[1]->bsdf()->lobes(), kDiffuseReflection);
   EXPECT_NE(scene->shapes()[2]->emitter(), nullptr);
@@ -103,7 +103,7 @@ TEST(SceneLoader, DirectSampleCountsDefaultToShadingSamples) {
       "<scene version='3.0.0'><integrator type='direct'><integer name='shading_samples' value='3'/>"
       "<integer name='bsdf_samples' value='2'/></integrator></scene>",
       "direct.xml");
-  EXPECT_THAT(scene->integrator()->describe(), StartsWith("direct emitter_samples=3 bsdf_samples=2"));
+  EXPECT_THAT(scene.integrator->describe(), StartsWith("direct emitter_samples=3 bsdf_samples=2"));
 }
 
 TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
@@ -111,10 +111,10 @@ TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
       "<scene version='3.0.0'><tonemap type='reinhard'><float name='key' value='0.3'/>"
       "<float name='exposure' value='-1'/></tonemap></scene>",
       "tonemap.xml");
-  ASSERT_TRUE(scene->tone_operator());
-  EXPECT_EQ(scene->tone_operator()->describe(), "reinhard key=0.300000 white=0.000000");
-  EXPECT_EQ(scene->tone_operator()->exposure(), -1);
-  EXPECT_FALSE(load_scene_string("<scene version='3.0.0'/>", "plain.xml")->tone_operator());
+  ASSERT_TRUE(scene.tone_operator);
+  EXPECT_EQ(scene.tone_operator->describe(), "reinhard key=0.300000 white=0.000000");
+  EXPECT_EQ(scene.tone_operator->exposure(), -1);
+  EXPECT_FALSE(load_scene_string("<scene version='3.0.0'/>", "plain.xml").tone_operator);
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<tonemap type='reinhard'/>\n<tonemap type='none'/></scene>"),
               HasSubstr("test.xml:3: a scene may have only one tonemap"));
 }
@@ -122,7 +122,7 @@ TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
 TEST(SceneLoader, DefaultsGiveAPerspectiveCameraAndPathTracer) {
   const auto scene = load_scene_string("<scene version='3.0.0'/>", "empty.xml");
   EXPECT_EQ(scene->sensor().film()->width(), 768);
-  EXPECT_THAT(scene->integrator()->describe(), StartsWith("path max_depth=-1"));
+  EXPECT_THAT(scene.integrator->describe(), StartsWith("path max_depth=-1"));
 }
 
 TEST(SceneLoader, ZeroPointSixSceneIsUpgraded) {
@@ -130,7 +130,7 @@ TEST(SceneLoader, ZeroPointSixSceneIsUpgraded) {
       "<scene version='0.6.0'><integrator type='path'><integer name='maxDepth' value='3'/></integrator>"
       "<shape type='sphere'><transform name='toWorld'><translate x='1'/></transform></shape></scene>",
       "old.xml");
-  EXPECT_THAT(scene->integrator()->describe(), StartsWith("path max_depth=3"));
+  EXPECT_THAT(scene.integrator->describe(), StartsWith("path max_depth=3"));
 }
 
 struct BadInput {

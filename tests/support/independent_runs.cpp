@@ -15,9 +15,9 @@ std::vector<Region> grid_regions(int width, int height, int n) {
   return regions;
 }
 
-std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vector<Region>& regions, uint32_t spp,
+std::vector<RegionEstimate> estimate_regions(const LoadedScene& scene, const std::vector<Region>& regions, uint32_t spp,
                                              int runs, uint64_t first_seed, uint64_t* non_finite) {
-  const int width = scene.sensor().film()->width();
+  const int width = scene->sensor().film()->width();
   std::vector<double> sum(regions.size(), 0), sum2(regions.size(), 0);
   for (int r = 0; r < runs; ++r) {
     const FilmBuffer film = render_scene(scene, spp, first_seed + r);
@@ -26,7 +26,7 @@ std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vect
       *non_finite += film.dropped_samples();
       for (float v : img) *non_finite += !std::isfinite(v);
     }
-    const size_t nc = img.size() / (size_t(width) * scene.sensor().film()->height());
+    const size_t nc = img.size() / (size_t(width) * scene->sensor().film()->height());
     for (size_t i = 0; i < regions.size(); ++i) {
       double mean = 0;
       const Region& g = regions[i];

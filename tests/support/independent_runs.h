@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/math/vec.h"
-#include "core/scene/scene.h"
+#include "core/scene/scene_loader.h"
 
 namespace caustica::test {
 
@@ -26,7 +26,7 @@ struct RegionEstimate {
 };
 // `non_finite`, if given, receives the number of samples and splats the
 // film dropped for not being finite, plus the non-finite pixels.
-std::vector<RegionEstimate> estimate_regions(const Scene& scene, const std::vector<Region>& regions, uint32_t spp,
+std::vector<RegionEstimate> estimate_regions(const LoadedScene& scene, const std::vector<Region>& regions, uint32_t spp,
                                              int runs, uint64_t first_seed, uint64_t* non_finite = nullptr);
 
 // Whether any camera ray within the filter's reach of the region first

@@ -2,18 +2,17 @@
 
 namespace caustica::test {
 
-std::unique_ptr<Scene> scene_from_xml(const std::string& xml, const std::string& name) {
-  return load_scene_string(xml, name);
-}
+LoadedScene scene_from_xml(const std::string& xml, const std::string& name) { return load_scene_string(xml, name); }
 
-FilmBuffer render_scene(const Scene& scene, uint32_t spp, uint64_t seed, int threads) {
-  FilmBuffer film(scene.sensor().film()->width(), scene.sensor().film()->height(), scene.integrator()->channels());
-  RenderOptions options;
-  options.spp = spp;
-  options.seed = seed;
-  options.threads = threads;
-  render(scene, options, film);
-  return film;
+FilmBuffer render_scene(const LoadedScene& scene, uint32_t spp, uint64_t seed, int threads, RenderStats* stats) {
+  RenderSettings settings;
+  settings.spp = spp;
+  settings.seed = seed;
+  settings.threads = threads;
+  settings.aovs = false;
+  RenderResult result = RenderJob(scene, settings).run();
+  if (stats) *stats = result.stats;
+  return std::move(result.film);
 }
 
 std::string load_error(const std::string& xml, const std::string& name) {

@@ -6,16 +6,18 @@
 #include <string>
 
 #include "core/film/film_buffer.h"
-#include "core/render/renderer.h"
+#include "core/job/render_job.h"
 #include "core/scene/scene_loader.h"
 
 namespace caustica::test {
 
 // A scene from XML text; `name` stands for the file in error messages.
-std::unique_ptr<Scene> scene_from_xml(const std::string& xml, const std::string& name = "test.xml");
+LoadedScene scene_from_xml(const std::string& xml, const std::string& name = "test.xml");
 
-// Renders the scene's integrator into a fresh film buffer.
-FilmBuffer render_scene(const Scene& scene, uint32_t spp, uint64_t seed = 0, int threads = 0);
+// Renders the scene file's integrator into a fresh film buffer; `stats`,
+// if given, receives what the render reports.
+FilmBuffer render_scene(const LoadedScene& scene, uint32_t spp, uint64_t seed = 0, int threads = 0,
+                        RenderStats* stats = nullptr);
 
 // The message of the SceneError (or other exception) loading `xml` throws,
 // or "" if it loads.

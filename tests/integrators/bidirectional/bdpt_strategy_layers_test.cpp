@@ -21,7 +21,7 @@ TEST(BdptStrategyLayers, NamedByStrategyInOrder) {
   const auto scene = test::scene_from_xml(
       "<scene version='3.0.0'><integrator type='bdpt'><integer name='strategy_layers' "
       "value='2'/></integrator></scene>");
-  EXPECT_THAT(scene->integrator()->channels(),
+  EXPECT_THAT(scene.integrator->channels(),
               testing::ElementsAre("R", "G", "B", "s0t2.R", "s0t2.G", "s0t2.B", "s1t1.R", "s1t1.G", "s1t1.B", "s0t3.R",
                                    "s0t3.G", "s0t3.B", "s1t2.R", "s1t2.G", "s1t2.B", "s2t1.R", "s2t1.G", "s2t1.B"));
 }
@@ -29,14 +29,15 @@ TEST(BdptStrategyLayers, NamedByStrategyInOrder) {
 // With max_depth equal to the layers' reach, every contribution lands in
 // exactly one layer, splats included.
 TEST(BdptStrategyLayers, SumToTheBeauty) {
-  const auto scene = load_scene(kScene, {{"res", "24"}, {"integrator", "bdpt"}, {"max_depth", "3"}});
-  scene->set_integrator(test::scene_from_xml("<scene version='3.0.0'><integrator type='bdpt'><integer "
-                                             "name='max_depth' value='3'/><integer name='strategy_layers' "
-                                             "value='3'/></integrator></scene>")
-                            ->integrator());
-  const auto channels = scene->integrator()->channels();
+  auto scene = load_scene(kScene, {{"res", "24"}, {"integrator", "bdpt"}, {"max_depth", "3"}});
+  scene.integrator = test::scene_from_xml(
+                         "<scene version='3.0.0'><integrator type='bdpt'><integer "
+                         "name='max_depth' value='3'/><integer name='strategy_layers' "
+                         "value='3'/></integrator></scene>")
+                         .integrator;
+  const auto channels = scene.integrator->channels();
   ASSERT_EQ(channels.size(), 3u + 3 * (2 + 3 + 4));
-  const auto img = test::render_scene(*scene, 8, 3).resolve();
+  const auto img = test::render_scene(scene, 8, 3).resolve();
   const size_t nc = channels.size();
   double beauty = 0, layers = 0;
   for (size_t p = 0; p < img.size() / nc; ++p)

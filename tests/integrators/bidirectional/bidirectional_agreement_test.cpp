@@ -77,7 +77,7 @@ TEST_P(BidirectionalAgreement, RegionMeansMatchPath) {
     const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml",
                                   {{"res", std::to_string(kRes)}, {"integrator", integrator.name}});
     uint64_t non_finite = 0;
-    const auto estimates = test::estimate_regions(*scene, regions, integrator.spp, kRuns, 1000, &non_finite);
+    const auto estimates = test::estimate_regions(scene, regions, integrator.spp, kRuns, 1000, &non_finite);
     EXPECT_EQ(non_finite, 0u) << name << " " << integrator.name;
     int compared = 0;
     for (size_t i = 0; i < regions.size(); ++i) {

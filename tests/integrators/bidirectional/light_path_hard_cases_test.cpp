@@ -91,7 +91,7 @@ TEST(LightPathHardCases, FiniteAndAgreeingAcrossIntegrators) {
     for (const char* integrator : c.integrators) {
       const auto scene = test::scene_from_xml(scene_xml(integrator, c.camera_origin, c.content));
       uint64_t non_finite = 0;
-      estimates.push_back(test::estimate_regions(*scene, regions, spp_for(integrator), kRuns, 500, &non_finite));
+      estimates.push_back(test::estimate_regions(scene, regions, spp_for(integrator), kRuns, 500, &non_finite));
       EXPECT_EQ(non_finite, 0u) << c.name << ", " << integrator;
       if (through_delta.empty())
         for (const auto& g : regions) through_delta.push_back(test::seen_through_delta(*scene, g));

@@ -30,9 +30,9 @@ const test::Region kCaustic{{13, 20}, {18, 23}};
 const test::Region kSphere{{13, 14}, {18, 19}};
 constexpr int kRuns = 8;
 
-std::unique_ptr<Scene> glass_box(const std::string& integrator) {
+LoadedScene glass_box(const std::string& integrator) {
   auto scene = load_scene(kGlass, {{"res", "24"}});
-  scene->set_integrator(make_integrator(integrator));
+  scene.integrator = make_integrator(integrator);
   return scene;
 }
 
@@ -41,12 +41,13 @@ TEST(Photon, WithoutCausticPathsItIsPathExactly) {
                                  {{"res", "16"}, {"integrator", "photon"}});
   const auto path =
       load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "16"}, {"integrator", "path"}});
-  const auto a = test::render_scene(*photon, 4, 9).resolve();
-  const auto b = test::render_scene(*path, 4, 9).resolve();
+  RenderStats stats;
+  const auto a = test::render_scene(photon, 4, 9, 0, &stats).resolve();
+  const auto b = test::render_scene(path, 4, 9).resolve();
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
-  EXPECT_THAT(photon->integrator()->describe(), HasSubstr("(photon pass skipped)"));
-  EXPECT_THAT(photon->integrator()->plan(*photon), HasSubstr("caustic photon pass skipped (no surface has a delta"));
+  EXPECT_THAT(stats.summary, HasSubstr("(photon pass skipped)"));
+  EXPECT_THAT(photon.integrator->plan(*photon), HasSubstr("caustic photon pass skipped (no surface has a delta"));
 }
 
 bool overlaps(const test::Region& a, const test::Region& b) {
@@ -60,10 +61,10 @@ TEST(Photon, AgreesWithBdptOnTheCausticAndWithPathElsewhere) {
   const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, int(regions.size())), kRuns - 1);
   const auto photon = glass_box("photon:photons=20000");
   uint64_t non_finite = 0;
-  const auto ph = test::estimate_regions(*photon, regions, 32, kRuns, 100, &non_finite);
+  const auto ph = test::estimate_regions(photon, regions, 32, kRuns, 100, &non_finite);
   EXPECT_EQ(non_finite, 0u);
-  const auto bdpt = test::estimate_regions(*glass_box("bdpt"), {kCaustic}, 32, kRuns, 200);
-  const auto path = test::estimate_regions(*glass_box("path"), regions, 512, kRuns, 300);
+  const auto bdpt = test::estimate_regions(glass_box("bdpt"), {kCaustic}, 32, kRuns, 200);
+  const auto path = test::estimate_regions(glass_box("path"), regions, 512, kRuns, 300);
   EXPECT_LT(std::abs(test::difference_score(ph[0], bdpt[0])), t_critical)
       << "caustic: photon " << ph[0].mean << " +- " << ph[0].standard_error << ", bdpt " << bdpt[0].mean << " +- "
       << bdpt[0].standard_error;
@@ -77,7 +78,7 @@ TEST(Photon, AgreesWithBdptOnTheCausticAndWithPathElsewhere) {
 
 // Squared error per pixel of the caustic region against a reference image,
 // for the mean of `runs` independent renders.
-double caustic_error(const Scene& scene, uint32_t spp, const std::vector<float>& reference, int runs = 1) {
+double caustic_error(const LoadedScene& scene, uint32_t spp, const std::vector<float>& reference, int runs = 1) {
   std::vector<float> img = test::render_scene(scene, spp, 5).resolve();
   for (int r = 1; r < runs; ++r) {
     const auto more = test::render_scene(scene, spp, 5 + r).resolve();
@@ -97,12 +98,12 @@ double caustic_error(const Scene& scene, uint32_t spp, const std::vector<float>&
 // Consistency: the error against bdpt's image falls as rounds add up; and
 // the bias, seen in the mean of several runs, shrinks with the radius.
 TEST(Photon, ErrorFallsWithRoundsAndBiasWithRadius) {
-  const auto reference = test::render_scene(*glass_box("bdpt"), 256, 77).resolve();
+  const auto reference = test::render_scene(glass_box("bdpt"), 256, 77).resolve();
   const auto photon = glass_box("photon:photons=20000");
-  EXPECT_GT(caustic_error(*photon, 2, reference), 2 * caustic_error(*photon, 64, reference));
+  EXPECT_GT(caustic_error(photon, 2, reference), 2 * caustic_error(photon, 64, reference));
   const auto wide = glass_box("photon:photons=20000,radius=0.12,alpha=0.99");
   const auto narrow = glass_box("photon:photons=20000,radius=0.015,alpha=0.99");
-  EXPECT_GT(caustic_error(*wide, 32, reference, 4), 2 * caustic_error(*narrow, 32, reference, 4));
+  EXPECT_GT(caustic_error(wide, 32, reference, 4), 2 * caustic_error(narrow, 32, reference, 4));
 }
 
 // Hard cases: a light just above the floor sends photons through the glass
@@ -122,7 +123,7 @@ TEST(Photon, GrazingPhotonsAndVanishingRadiusStayFinite) {
   for (const char* r : {"0.05", "1e-9"}) {
     const auto scene = load_scene_string(low_light, "low.xml", {{"r", r}});
     EXPECT_TRUE(scene->features().caustic_paths);
-    const FilmBuffer film = test::render_scene(*scene, 8, 3);
+    const FilmBuffer film = test::render_scene(scene, 8, 3);
     EXPECT_EQ(film.dropped_samples(), 0u) << r;
     for (float v : film.resolve()) ASSERT_TRUE(std::isfinite(v) && v >= 0) << r;
   }

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/film/film_buffer.h"
+#include "core/render/renderer.h"
+#include "core/scene/scene_loader.h"
+
+namespace caustica {
+
+// How a scene is rendered: everything that is not the scene itself.
+struct RenderSettings {
+  // NAME or NAME:param=value,... to replace the scene's integrator; the
+  // scene's integrator parameters that NAME shares stay unless named.
+  std::string integrator;
+  uint32_t spp = 0;           // 0: the scene sampler's sample_count
+  uint64_t first_sample = 0;  // render sample indices first_sample, first_sample + 1, ...
+  double time_limit = 0;      // seconds; when positive, instead of spp
+  uint64_t seed = 0;
+  int threads = 0;   // 0: all cores
+  bool aovs = true;  // the first-hit layers, for integrators of radiance
+  const std::atomic<bool>* stop = nullptr;
+};
+
+// What a render made: its film, the first-hit layers, and its report.
+struct RenderResult {
+  FilmBuffer film;
+  std::optional<FilmBuffer> aovs;
+  RenderStats stats;
+};
+
+// The one way caustica renders, for the command line, the benchmarks and
+// the tests alike: a loaded scene (analysed at load), the integrator the
+// settings call for, and run() rendering a range of samples into a fresh
+// film. The scene and the integrator stay const, so one job may run
+// several times, even at once.
+class RenderJob {
+ public:
+  RenderJob(LoadedScene scene, RenderSettings settings);
+
+  const LoadedScene& scene() const { return scene_; }
+  const Integrator& integrator() const { return *integrator_; }
+  const RenderSettings& settings() const { return settings_; }
+  // What the integrator will do with this scene, and what it skips.
+  std::string plan() const { return integrator_->plan(*scene_); }
+
+  RenderResult run(RenderProgress* progress = nullptr) const;
+  // Runs one sample alone, as run() renders it.
+  ReplayedSample replay(Vec2i pixel, uint64_t index) const;
+
+ private:
+  LoadedScene scene_;
+  RenderSettings settings_;
+  std::shared_ptr<const Integrator> integrator_;
+};
+
+// Loads the scene file and makes its job.
+RenderJob load_render_job(const std::filesystem::path& file, const Defines& defines, RenderSettings settings);
+
+}  // namespace caustica

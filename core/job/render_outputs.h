@@ -1,0 +1,28 @@
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "core/film/film_buffer.h"
+#include "core/image/image_output.h"
+#include "core/job/render_job.h"
+
+namespace caustica {
+
+// The layers of a render's EXR: the film's channels, then (for radiance)
+// the first-hit layers, the per-pixel variance where it describes the
+// estimate, and samples.Y; with `raw_sums`, the films' raw sums (raw.*,
+// raw.aov.*), from which renders of disjoint sample ranges merge exactly.
+Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums);
+
+// The metadata caustica writes beside a render: scene, plan, integrator,
+// the sample range, time, counts, seed, what the integrator reported, and
+// (with `raw_sums`) the films' channels in order.
+std::map<std::string, std::string> render_metadata(const RenderJob& job, const RenderResult& result,
+                                                   const std::string& scene_name, bool raw_sums);
+
+// The films' channels in order, for the raw sums of a render.
+void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,
+                           std::map<std::string, std::string>& metadata);
+
+}  // namespace caustica

@@ -1,0 +1,80 @@
+#include "core/render/iterative_integrator.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "core/render/camera_sample.h"
+#include "core/render/renderer.h"
+#include "core/render/standard_aovs.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+namespace {
+
+class IterativeRun final : public IntegratorRun {
+ public:
+  IterativeRun(const Scene& scene, uint64_t seed, std::unique_ptr<IterationState> state)
+      : scene_(scene), seed_(seed), state_(std::move(state)) {}
+
+  uint32_t max_pass_samples() const override { return 1; }
+  bool variance_known() const override { return false; }
+
+  void run_pass(PassRange range, const PassTarget& target) override {
+    const Film& film = *scene_.sensor().film();
+    for (uint64_t i = range.first; i < range.first + range.count; ++i) {
+      state_->iterate(i);
+      ++iterations_;
+      last_ = i;
+      if (target.aovs && i < kAovSamples) add_aovs(i, *target.aovs);
+      if (target.progress) target.progress->pixel_samples += uint64_t(film.width()) * film.height();
+    }
+  }
+
+  void finish(FilmBuffer& film) override {
+    if (iterations_ == 0) return;
+    tbb::parallel_for(0, film.height(), [&](int y) {
+      for (int x = 0; x < film.width(); ++x) {
+        const Color L = state_->estimate({x, y});
+        const float values[3] = {L.r, L.g, L.b};
+        film.add_sample({{x, y}, last_}, values, 1, iterations_);
+      }
+    });
+  }
+
+  ReplayedSample replay(Vec2i, uint64_t) override {
+    throw std::invalid_argument(
+        "an iterative integrator keeps each pixel's statistics across iterations: one sample cannot be replayed alone");
+  }
+
+  std::string summary() const override { return state_->summary(); }
+
+ private:
+  void add_aovs(uint64_t index, FilmBuffer& aovs) const {
+    tbb::enumerable_thread_specific<std::pair<std::unique_ptr<Sampler>, std::vector<float>>> scratch(
+        [&] { return std::pair(scene_.sensor().sampler()->clone(), std::vector<float>()); });
+    tbb::parallel_for(0, aovs.height(), [&](int y) {
+      auto& [sampler, values] = scratch.local();
+      for (int x = 0; x < aovs.width(); ++x)
+        add_standard_aovs(scene_, sample_camera_ray(scene_, *sampler, {x, y}, index, seed_), {{x, y}, index}, aovs,
+                          values);
+    });
+  }
+
+  const Scene& scene_;
+  uint64_t seed_;
+  std::unique_ptr<IterationState> state_;
+  uint32_t iterations_ = 0;
+  uint64_t last_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<IntegratorRun> IterativeIntegrator::start(const Scene& scene, uint64_t seed) const {
+  return std::make_unique<IterativeRun>(scene, seed, begin(scene, seed));
+}
+
+}  // namespace caustica

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+
+#include "core/geometry/ray.h"
+#include "core/math/color.h"
+#include "core/render/integrator.h"
+#include "core/sampling/sampler.h"
+
+namespace caustica {
+
+// The state of one render of a per-pixel estimator.
+class PixelEstimator {
+ public:
+  virtual ~PixelEstimator() = default;
+  // Before the pass numbered `pass` (core/render/pass_schedule.h), e.g. to
+  // trace that pass's round of photons.
+  virtual void begin_pass(uint32_t) {}
+  virtual uint32_t max_pass_samples() const { return 16; }
+  // Estimates the channels along one camera ray; every number it draws
+  // comes from `sampler`, which is on the pixel's camera stream.
+  virtual void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const = 0;
+  virtual std::string summary() const { return ""; }
+};
+
+// The per-pixel family (path, direct, aov, photon): each sample of a pixel
+// is a camera ray through it, placed by the pixel filter, and the estimate
+// along it enters that pixel. The loop runs tiles in parallel, the samples
+// of a pixel in index order.
+class PixelIntegrator : public Integrator {
+ public:
+  virtual std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t seed) const = 0;
+  std::unique_ptr<IntegratorRun> start(const Scene& scene, uint64_t seed) const final;
+};
+
+// A per-pixel estimator of RGB radiance that keeps no state of its own.
+class RadianceIntegrator : public PixelIntegrator {
+ public:
+  virtual Color Li(const Scene& scene, Ray ray, Sampler& sampler) const = 0;
+  std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t seed) const override;
+};
+
+}  // namespace caustica

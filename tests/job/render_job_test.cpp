@@ -1,0 +1,135 @@
+// The render job: integrator overrides keep the scene's shared settings,
+// and renders of disjoint sample ranges merge into the render of their
+// union.
+
+#include "core/job/render_job.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "core/job/range_merge.h"
+#include "core/job/render_outputs.h"
+#include "tests/support/test_scenes.h"
+
+namespace caustica {
+namespace {
+
+using testing::HasSubstr;
+using testing::StartsWith;
+
+LoadedScene scene_with(const std::string& integrator) {
+  return test::scene_from_xml(
+      "<scene version='3.0.0'>" + integrator +
+      "<shape type='sphere'><emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>");
+}
+
+std::string described(const std::string& scene_integrator, const std::string& override_spec) {
+  RenderSettings settings;
+  settings.integrator = override_spec;
+  return RenderJob(scene_with(scene_integrator), settings).integrator().describe();
+}
+
+TEST(RenderJob, AnOverrideKeepsTheSettingsTheScenesIntegratorShares) {
+  const std::string path =
+      "<integrator type='path'><integer name='max_depth' value='65'/>"
+      "<boolean name='hide_emitters' value='true'/></integrator>";
+  EXPECT_THAT(described(path, "bdpt"), StartsWith("bdpt max_depth=65 rr_depth=5"));
+  EXPECT_THAT(described(path, "bdpt"), HasSubstr("hide_emitters=true"));
+  EXPECT_THAT(described(path, "bdpt:max_depth=4"), StartsWith("bdpt max_depth=4 "));
+  EXPECT_THAT(described(path, "ptracer:rr_depth=2"), StartsWith("ptracer max_depth=65 rr_depth=2"));
+  // direct declares no max_depth: nothing to keep, and no error.
+  EXPECT_THAT(described(path, "direct"), StartsWith("direct emitter_samples=1"));
+  const std::string photon = "<integrator type='photon'><integer name='photons' value='1234'/></integrator>";
+  EXPECT_THAT(described(photon, "sppm"), HasSubstr("photons=1234"));
+  EXPECT_THAT(described(photon, "sppm:photons=99"), HasSubstr("photons=99 "));
+  EXPECT_THAT(described("", "bdpt"), StartsWith("bdpt max_depth=-1"));
+  EXPECT_THAT(described(path, ""), StartsWith("path max_depth=65"));
+}
+
+const std::string kGlass = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml";
+
+RenderFile render_range(const LoadedScene& scene, const std::string& integrator, uint64_t first, uint32_t spp,
+                        uint64_t seed = 7) {
+  RenderSettings settings;
+  settings.integrator = integrator;
+  settings.first_sample = first;
+  settings.spp = spp;
+  settings.seed = seed;
+  const RenderJob job(scene, settings);
+  const RenderResult r = job.run();
+  return {"range " + std::to_string(first) + "+" + std::to_string(spp),
+          render_layers(r.film, r.aovs ? &*r.aovs : nullptr, r.stats.variance_known, true),
+          render_metadata(job, r, "glass", true)};
+}
+
+// The channels both images have that are not raw sums, and the largest
+// relative difference between them.
+double largest_difference(const Image& a, const Image& b, bool* identical) {
+  EXPECT_EQ(a.channels, b.channels);
+  double largest = 0;
+  *identical = true;
+  for (size_t c = 0; c < a.channels.size(); ++c) {
+    if (a.channels[c].rfind("raw.", 0) == 0) continue;
+    for (size_t p = 0; p < a.pixels.size() / a.channels.size(); ++p) {
+      const float x = a.pixels[p * a.channels.size() + c], y = b.pixels[p * b.channels.size() + c];
+      *identical = *identical && std::memcmp(&x, &y, sizeof x) == 0;
+      largest = std::max(largest, std::abs(double(x) - y) / std::max(1e-6, std::abs(double(y))));
+    }
+  }
+  return largest;
+}
+
+// Bit for bit, photon included, whose photon rounds follow the sample
+// index rather than the render's own passes. The sums are doubles added in
+// another order than in one render, so in general the merge is exact only
+// up to that order; in float images it is exact here.
+TEST(RenderJob, DisjointSampleRangesMergeIntoTheRenderOfTheirUnion) {
+  const auto scene = load_scene(kGlass, {{"res", "24"}});
+  struct Case {
+    const char* integrator;
+    bool bit_for_bit;
+  };
+  for (const Case& c :
+       {Case{"path", true}, Case{"photon:photons=3000", true}, Case{"bdpt", true}, Case{"ptracer", true}}) {
+    const RenderFile whole = render_range(scene, c.integrator, 0, 21);
+    const RenderFile merged =
+        merge_sample_ranges({render_range(scene, c.integrator, 13, 8), render_range(scene, c.integrator, 0, 5),
+                             render_range(scene, c.integrator, 5, 8)});
+    bool identical = false;
+    const double difference = largest_difference(merged.image, whole.image, &identical);
+    if (c.bit_for_bit)
+      EXPECT_TRUE(identical) << c.integrator << ": largest relative difference " << difference;
+    else
+      EXPECT_LT(difference, 1e-5) << c.integrator;
+    EXPECT_EQ(merged.metadata.at("caustica:spp"), "21") << c.integrator;
+    EXPECT_EQ(merged.metadata.at("caustica:ranges"), "0-4,5-12,13-20") << c.integrator;
+  }
+}
+
+TEST(RenderJob, RangeMergeRefusesOverlapsOtherSeedsAndMissingSums) {
+  const auto scene = load_scene(kGlass, {{"res", "8"}});
+  const RenderFile a = render_range(scene, "path", 0, 4), b = render_range(scene, "path", 3, 4);
+  try {
+    merge_sample_ranges({a, b});
+    ADD_FAILURE() << "overlap accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("'range 3+4' overlaps the sample range of another part (samples 3 to 6)"));
+  }
+  try {
+    merge_sample_ranges({a, render_range(scene, "path", 4, 4, 8)});
+    ADD_FAILURE() << "other seed accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("has another seed than 'range 0+4'"));
+  }
+  try {
+    merge_sample_ranges({a, without_raw_sums(render_range(scene, "path", 4, 4))});
+    ADD_FAILURE() << "missing sums accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("holds no raw sums (render it with --raw-sums)"));
+  }
+}
+
+}  // namespace
+}  // namespace caustica
