@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 #include "integrators/photon/photon_tracing.h"
 
 namespace caustica {

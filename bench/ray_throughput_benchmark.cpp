@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/job/render_job.h"
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 
 namespace caustica {
 namespace {

@@ -31,6 +31,7 @@
 
 #include "core/bsdf/perturbed_frame_bsdf.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture.h"
 
 namespace caustica {
 namespace {

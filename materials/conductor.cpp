@@ -25,6 +25,7 @@
 #include "core/bsdf/delta_bsdf.h"
 #include "core/bsdf/fresnel.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -32,7 +33,7 @@ namespace {
 class ConductorBsdf final : public DeltaBsdf {
  public:
   explicit ConductorBsdf(const Properties& props)
-      : ior_(conductor_ior(props)), specular_reflectance_(props.get_texture("specular_reflectance")) {}
+      : ior_(conductor_ior(props)), specular_reflectance_(read_texture(props, "specular_reflectance")) {}
 
   uint32_t lobes() const override { return kDeltaReflection; }
 

@@ -14,13 +14,14 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
 
 class DiffuseBsdf final : public Bsdf {
  public:
-  explicit DiffuseBsdf(const Properties& props) : reflectance_(props.get_texture("reflectance")) {}
+  explicit DiffuseBsdf(const Properties& props) : reflectance_(read_texture(props, "reflectance")) {}
 
   uint32_t lobes() const override { return kDiffuseReflection; }
 

@@ -26,6 +26,7 @@
 #include "core/bsdf/bsdf.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -33,7 +34,7 @@ namespace {
 class MaskBsdf final : public Bsdf {
  public:
   explicit MaskBsdf(const Properties& props)
-      : opacity_(props.get_texture("opacity")), nested_(props.child<Bsdf>("bsdf")) {
+      : opacity_(read_texture(props, "opacity")), nested_(props.child<Bsdf>("bsdf")) {
     if (!nested_) throw SceneError(props.where(), "bsdf 'mask' takes one nested bsdf");
   }
 

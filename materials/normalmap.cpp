@@ -29,6 +29,7 @@
 
 #include "core/bsdf/perturbed_frame_bsdf.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -36,7 +37,7 @@ namespace {
 class NormalMapBsdf final : public PerturbedFrameBsdf {
  public:
   explicit NormalMapBsdf(const Properties& props)
-      : PerturbedFrameBsdf(props), normals_(props.get_texture("normalmap")) {}
+      : PerturbedFrameBsdf(props), normals_(read_texture(props, "normalmap")) {}
 
  private:
   Frame frame(const BsdfContext& ctx) const override {

@@ -39,9 +39,11 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/fresnel.h"
+#include "core/bsdf/ior.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -51,9 +53,9 @@ Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
 class PlasticBsdf final : public Bsdf {
  public:
   explicit PlasticBsdf(const Properties& props)
-      : kd_(props.get_texture("diffuse_reflectance")),
-        ks_(props.get_texture("specular_reflectance")),
-        eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
+      : kd_(read_texture(props, "diffuse_reflectance")),
+        ks_(read_texture(props, "specular_reflectance")),
+        eta_(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
         nonlinear_(props.get_bool("nonlinear")) {
     if (!(eta_ > 0) || !std::isfinite(eta_)) throw props.error("int_ior", "int_ior / ext_ior must be positive");
     fdr_ = internal_diffuse_reflectance(eta_);

@@ -33,6 +33,7 @@
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/microfacet_params.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -50,7 +51,7 @@ class RoughConductorBsdf final : public Bsdf {
   explicit RoughConductorBsdf(const Properties& props)
       : distribution_(microfacet_from(props)),
         ior_(conductor_ior(props)),
-        specular_reflectance_(props.get_texture("specular_reflectance")),
+        specular_reflectance_(read_texture(props, "specular_reflectance")),
         sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override { return kGlossyReflection; }

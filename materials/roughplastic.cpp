@@ -51,10 +51,12 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/fresnel.h"
+#include "core/bsdf/ior.h"
 #include "core/bsdf/microfacet_params.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -63,9 +65,9 @@ class RoughPlasticBsdf final : public Bsdf {
  public:
   explicit RoughPlasticBsdf(const Properties& props)
       : dist_(microfacet_from(props)),
-        kd_(props.get_texture("diffuse_reflectance")),
-        ks_(props.get_texture("specular_reflectance")),
-        eta_(props.get_ior("int_ior") / props.get_ior("ext_ior")),
+        kd_(read_texture(props, "diffuse_reflectance")),
+        ks_(read_texture(props, "specular_reflectance")),
+        eta_(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
         nonlinear_(props.get_bool("nonlinear")) {
     if (!(eta_ > 0) || !std::isfinite(eta_)) throw props.error("int_ior", "int_ior / ext_ior must be positive");
     fdr_ = internal_diffuse_reflectance(eta_);

@@ -1,12 +1,14 @@
 #include "core/bsdf/dielectric_interface.h"
 
+#include "core/bsdf/ior.h"
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 
 DielectricInterface::DielectricInterface(const Properties& props)
-    : eta(props.get_ior("int_ior") / props.get_ior("ext_ior")),
-      reflectance(props.get_texture("specular_reflectance")),
-      transmittance(props.get_texture("specular_transmittance")) {}
+    : eta(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
+      reflectance(read_texture(props, "specular_reflectance")),
+      transmittance(read_texture(props, "specular_transmittance")) {}
 
 }  // namespace caustica

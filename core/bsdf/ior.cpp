@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "core/registry/properties.h"
+
 namespace caustica {
 
 namespace {
@@ -29,6 +31,28 @@ std::vector<std::string> ior_names() {
   std::vector<std::string> out;
   for (const auto& [n, v] : kIors) out.push_back(n);
   return out;
+}
+
+float read_ior(const Properties& props, const std::string& name) {
+  const PropertyValue v = props.value(name, ParamType::Ior);
+  float ior = 0;
+  if (v.kind == ValueKind::String) {
+    const std::string& text = std::get<std::string>(v.value);
+    if (const auto known = named_ior(text)) {
+      ior = *known;
+    } else {
+      // Defaults are written as text, so a default of "1.5" arrives here too.
+      try {
+        ior = float(std::get<double>(parse_value_text(ValueKind::Float, text, v.where).value));
+      } catch (const SceneError&) {
+        throw props.error(name, "unknown index of refraction '" + text + "' (known: " + join_names(ior_names()) + ")");
+      }
+    }
+  } else {
+    ior = v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
+  }
+  if (!(ior >= 1)) throw props.error(name, "an index of refraction must be at least 1");
+  return ior;
 }
 
 }  // namespace caustica

@@ -5,7 +5,7 @@
 
 #include "core/film/film.h"
 #include "core/geometry/ray.h"
-#include "core/lights/emitter.h"
+#include "core/geometry/reference_point.h"
 #include "core/math/color.h"
 #include "core/registry/plugin.h"
 #include "core/sampling/sampler.h"

@@ -5,8 +5,8 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/cli/render_command.h"
+#include "core/loader/scene_loader.h"
 #include "core/registry/registry.h"
-#include "core/scene/scene_loader.h"
 
 namespace caustica {
 

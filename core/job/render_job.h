@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/film/film_buffer.h"
+#include "core/loader/scene_loader.h"
 #include "core/render/renderer.h"
-#include "core/scene/scene_loader.h"
 
 namespace caustica {
 

@@ -5,17 +5,13 @@
 
 #include "core/geometry/bounds.h"
 #include "core/geometry/interaction.h"
+#include "core/geometry/reference_point.h"
 #include "core/math/color.h"
 #include "core/registry/plugin.h"
 
 namespace caustica {
 
 class Shape;
-
-// The point that receives light, as emitters need to see it.
-struct ReferencePoint {
-  Vec3 p, p_error, n;  // n is zero for points not on a surface
-};
 
 // Incident light sampled toward a reference point.
 struct LiSample {

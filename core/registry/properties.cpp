@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "core/bsdf/ior.h"
-
 namespace caustica {
 
 namespace {
@@ -51,7 +49,7 @@ SceneError Properties::error(const std::string& name, const std::string& problem
   return SceneError(v ? v->where : where_, "parameter '" + name + "' of " + plugin_name(*info_) + ": " + problem);
 }
 
-PropertyValue Properties::value_or_default(const std::string& name, ParamType wanted) const {
+PropertyValue Properties::value(const std::string& name, ParamType wanted) const {
   const ParamSpec* spec = info_->param(name);
   if (!spec || spec->type != wanted)
     throw std::logic_error(plugin_name(*info_) + " reads undeclared parameter " + name + " as " + to_string(wanted));
@@ -61,86 +59,41 @@ PropertyValue Properties::value_or_default(const std::string& name, ParamType wa
 }
 
 bool Properties::get_bool(const std::string& name) const {
-  return std::get<bool>(value_or_default(name, ParamType::Boolean).value);
+  return std::get<bool>(value(name, ParamType::Boolean).value);
 }
 
 int64_t Properties::get_int(const std::string& name) const {
-  return std::get<int64_t>(value_or_default(name, ParamType::Integer).value);
+  return std::get<int64_t>(value(name, ParamType::Integer).value);
 }
 
 float Properties::get_float(const std::string& name) const {
-  const PropertyValue v = value_or_default(name, ParamType::Float);
+  const PropertyValue v = value(name, ParamType::Float);
   return v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
 }
 
 std::string Properties::get_string(const std::string& name) const {
-  return std::get<std::string>(value_or_default(name, ParamType::String).value);
+  return std::get<std::string>(value(name, ParamType::String).value);
 }
 
 std::filesystem::path Properties::get_path(const std::string& name) const {
-  const PropertyValue v = value_or_default(name, ParamType::String);
+  const PropertyValue v = value(name, ParamType::String);
   const std::filesystem::path file = std::get<std::string>(v.value);
   if (file.is_absolute()) return file;
   return std::filesystem::path(v.where.file).parent_path() / file;
 }
 
-namespace {
-
-Color as_color(const PropertyValue& v) {
-  switch (v.kind) {
-    case ValueKind::Integer:
-      return Color(float(std::get<int64_t>(v.value)));
-    case ValueKind::Float:
-      return Color(float(std::get<double>(v.value)));
-    default:
-      return std::get<Color>(v.value);
-  }
-}
-
-}  // namespace
-
-Color Properties::get_color(const std::string& name) const {
-  return as_color(value_or_default(name, ParamType::Color));
-}
+Color Properties::get_color(const std::string& name) const { return as_color(value(name, ParamType::Color)); }
 
 Vec3 Properties::get_point(const std::string& name) const {
-  return std::get<Vec3>(value_or_default(name, ParamType::Point).value);
+  return std::get<Vec3>(value(name, ParamType::Point).value);
 }
 
 Vec3 Properties::get_vector(const std::string& name) const {
-  return std::get<Vec3>(value_or_default(name, ParamType::Vector).value);
+  return std::get<Vec3>(value(name, ParamType::Vector).value);
 }
 
 Transform Properties::get_transform(const std::string& name) const {
-  return std::get<Transform>(value_or_default(name, ParamType::Transform).value);
-}
-
-float Properties::get_ior(const std::string& name) const {
-  const PropertyValue v = value_or_default(name, ParamType::Ior);
-  float ior = 0;
-  if (v.kind == ValueKind::String) {
-    const std::string& text = std::get<std::string>(v.value);
-    if (const auto known = named_ior(text)) {
-      ior = *known;
-    } else {
-      // Defaults are written as text, so a default of "1.5" arrives here too.
-      try {
-        ior = float(std::get<double>(parse_value_text(ValueKind::Float, text, v.where).value));
-      } catch (const SceneError&) {
-        throw error(name, "unknown index of refraction '" + text + "' (known: " + join_names(ior_names()) + ")");
-      }
-    }
-  } else {
-    ior = v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
-  }
-  if (!(ior >= 1)) throw error(name, "an index of refraction must be at least 1");
-  return ior;
-}
-
-std::shared_ptr<Texture> Properties::get_texture(const std::string& name) const {
-  const PropertyValue v = value_or_default(name, ParamType::Texture);
-  if (v.kind == ValueKind::Object) return std::dynamic_pointer_cast<Texture>(std::get<ObjectValue>(v.value).object);
-  return std::make_shared<ConstantTexture>(as_color(v));
+  return std::get<Transform>(value(name, ParamType::Transform).value);
 }
 
 }  // namespace caustica

@@ -6,9 +6,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/math/color.h"
+#include "core/math/transform.h"
 #include "core/registry/property_value.h"
 #include "core/registry/registry.h"
-#include "core/texture/texture.h"
 
 namespace caustica {
 
@@ -40,9 +41,6 @@ class Properties {
   Vec3 get_point(const std::string& name) const;
   Vec3 get_vector(const std::string& name) const;
   Transform get_transform(const std::string& name) const;
-  std::shared_ptr<Texture> get_texture(const std::string& name) const;
-  // A number, or a name from the table of known indices of refraction.
-  float get_ior(const std::string& name) const;
 
   template <class T>
   std::vector<std::shared_ptr<T>> children(const std::string& category) const {
@@ -59,13 +57,16 @@ class Properties {
     return all.empty() ? nullptr : all.front();
   }
 
+  // The value of a parameter of type `wanted`: the one given, else the
+  // declared default (parsed), else a SceneError as the parameter is required.
+  PropertyValue value(const std::string& name, ParamType wanted) const;
+
   // An error about parameter `name`, placed where it was written (or at the
   // plugin if it was left at its default).
   SceneError error(const std::string& name, const std::string& problem) const;
 
  private:
   const PropertyValue* find(const std::string& name) const;
-  PropertyValue value_or_default(const std::string& name, ParamType wanted) const;
 
   const PluginInfo* info_;
   SourceLocation where_;

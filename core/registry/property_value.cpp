@@ -160,4 +160,15 @@ ValueKind default_kind(ParamType t) {
   return ValueKind::Float;
 }
 
+Color as_color(const PropertyValue& v) {
+  switch (v.kind) {
+    case ValueKind::Integer:
+      return Color(float(std::get<int64_t>(v.value)));
+    case ValueKind::Float:
+      return Color(float(std::get<double>(v.value)));
+    default:
+      return std::get<Color>(v.value);
+  }
+}
+
 }  // namespace caustica

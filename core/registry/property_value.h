@@ -5,11 +5,11 @@
 #include <string>
 #include <variant>
 
+#include "core/errors/scene_error.h"
 #include "core/math/color.h"
 #include "core/math/transform.h"
 #include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
-#include "core/scene/scene_error.h"
 
 namespace caustica {
 
@@ -39,5 +39,8 @@ bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_cate
 
 // The value kind a parameter's default text is parsed as.
 ValueKind default_kind(ParamType t);
+
+// A colour value; numbers stand for grey.
+Color as_color(const PropertyValue& v);
 
 }  // namespace caustica

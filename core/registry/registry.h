@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/errors/scene_error.h"
 #include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
-#include "core/scene/scene_error.h"
 
 namespace caustica {
 

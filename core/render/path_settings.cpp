@@ -1,7 +1,5 @@
 #include "core/render/path_settings.h"
 
-#include <algorithm>
-
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -16,12 +14,6 @@ PathSettings read_path_settings(const Properties& props) {
   if (s.rr_depth < 1) throw props.error("rr_depth", "must be at least 1");
   if (!(s.rr_max_survival > 0 && s.rr_max_survival <= 1)) throw props.error("rr_max_survival", "must be in (0, 1]");
   return s;
-}
-
-WalkLimits camera_walk_limits(const PathSettings& s) { return {s.max_depth, {s.rr_depth, s.rr_max_survival}}; }
-
-WalkLimits light_walk_limits(const PathSettings& s) {
-  return {s.max_depth < 0 ? -1 : std::max<int64_t>(0, s.max_depth - 1), {s.rr_depth, s.rr_max_survival}};
 }
 
 std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more) {

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/registry/param_spec.h"
-#include "core/transport/walk_limits.h"
 
 namespace caustica {
 
@@ -26,12 +25,6 @@ struct PathSettings {
 };
 
 PathSettings read_path_settings(const Properties& props);
-
-// The walks these settings allow. A camera walk may have max_depth
-// segments; a light walk one fewer, since its last vertex still needs the
-// segment to the camera.
-WalkLimits camera_walk_limits(const PathSettings& settings);
-WalkLimits light_walk_limits(const PathSettings& settings);
 
 // The declarations of those parameters, followed by `more`.
 std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more = {});

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "core/camera/sensor.h"
-#include "core/geometry/embree_scene.h"
 #include "core/geometry/ray_log.h"
 #include "core/lights/emitter.h"
-#include "core/render/light_selection.h"
+#include "core/lights/light_selection.h"
+#include "core/scene/embree_scene.h"
 #include "core/scene/scene_features.h"
 #include "core/shapes/shape.h"
 

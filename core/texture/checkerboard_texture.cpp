@@ -25,6 +25,7 @@
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -32,7 +33,7 @@ namespace {
 class CheckerboardTexture final : public Texture {
  public:
   explicit CheckerboardTexture(const Properties& props)
-      : color0_(props.get_texture("color0")), color1_(props.get_texture("color1")) {
+      : color0_(read_texture(props, "color0")), color1_(read_texture(props, "color1")) {
     if (props.has("to_uv")) to_uv_ = props.get_transform("to_uv");
   }
 

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
+#include "core/render/path_settings.h"
 #include "core/transport/russian_roulette.h"
 
 namespace caustica {
@@ -13,5 +15,13 @@ struct WalkLimits {
   int64_t max_segments = -1;
   RussianRoulette roulette;
 };
+
+// The walks path settings allow. A camera walk may have max_depth
+// segments; a light walk one fewer, since its last vertex still needs the
+// segment to the camera.
+inline WalkLimits camera_walk_limits(const PathSettings& s) { return {s.max_depth, {s.rr_depth, s.rr_max_survival}}; }
+inline WalkLimits light_walk_limits(const PathSettings& s) {
+  return {s.max_depth < 0 ? -1 : std::max<int64_t>(0, s.max_depth - 1), {s.rr_depth, s.rr_max_survival}};
+}
 
 }  // namespace caustica

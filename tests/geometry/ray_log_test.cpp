@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/loader/scene_loader.h"
 #include "core/render/renderer.h"
-#include "core/scene/scene_loader.h"
 
 namespace caustica {
 namespace {

@@ -14,11 +14,11 @@ const PluginInfo kInfo{"bsdf", "ior_reader", {{"int_ior", ParamType::Ior, "bk7",
 float read(const PropertyValue& v) {
   Properties props(kInfo, {"test.xml", 1});
   props.set("int_ior", v);
-  return props.get_ior("int_ior");
+  return read_ior(props, "int_ior");
 }
 
 TEST(Ior, NumbersAndNames) {
-  EXPECT_FLOAT_EQ(Properties(kInfo, {"test.xml", 1}).get_ior("int_ior"), 1.5046f);
+  EXPECT_FLOAT_EQ(read_ior(Properties(kInfo, {"test.xml", 1}), "int_ior"), 1.5046f);
   EXPECT_FLOAT_EQ(read({ValueKind::Float, 1.33, {"test.xml", 2}}), 1.33f);
   EXPECT_FLOAT_EQ(read({ValueKind::String, std::string("water"), {"test.xml", 2}}), 1.333f);
   EXPECT_FLOAT_EQ(read({ValueKind::String, std::string("1.7"), {"test.xml", 2}}), 1.7f);

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/bsdf/fresnel.h"
-#include "core/scene/scene_error.h"
+#include "core/errors/scene_error.h"
 #include "tests/support/bsdf_checks.h"
 
 namespace caustica {

@@ -1,3 +1,5 @@
+#include "core/texture/texture.h"
+
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <thread>
 
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {

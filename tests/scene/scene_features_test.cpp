@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/bsdf/bsdf.h"
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/loader/scene_loader.h"
 #include "core/math/vec.h"
-#include "core/scene/scene_loader.h"
 
 namespace caustica::test {
 

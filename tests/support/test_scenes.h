@@ -7,7 +7,7 @@
 
 #include "core/film/film_buffer.h"
 #include "core/job/render_job.h"
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 
 namespace caustica::test {
 

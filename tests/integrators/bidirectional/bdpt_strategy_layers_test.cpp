@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {

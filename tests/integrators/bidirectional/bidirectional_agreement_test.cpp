@@ -18,7 +18,7 @@
 #include <cmath>
 
 #include "core/image/image_input.h"
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"

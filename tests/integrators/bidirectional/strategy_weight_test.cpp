@@ -17,8 +17,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/loader/scene_loader.h"
 #include "core/registry/properties.h"
-#include "core/scene/scene_loader.h"
 #include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/subpath.h"
 #include "tests/support/test_scenes.h"

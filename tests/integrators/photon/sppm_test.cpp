@@ -11,9 +11,9 @@
 #include <cmath>
 
 #include "core/bsdf/bsdf.h"
+#include "core/loader/scene_loader.h"
 #include "core/registry/registry.h"
 #include "core/sampling/warp.h"
-#include "core/scene/scene_loader.h"
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/scene/scene_error.h"
+#include "core/errors/scene_error.h"
 
 namespace caustica {
 

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "core/loader/xml_node.h"
 #include "core/math/transform.h"
-#include "core/scene/xml_node.h"
 
 namespace caustica {
 

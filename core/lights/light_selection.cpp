@@ -1,4 +1,4 @@
-#include "core/render/light_selection.h"
+#include "core/lights/light_selection.h"
 
 namespace caustica {
 

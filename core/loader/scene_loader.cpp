@@ -1,12 +1,12 @@
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 
 #include <set>
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
+#include "core/loader/transform_parser.h"
+#include "core/loader/xml_reader.h"
 #include "core/registry/properties.h"
-#include "core/scene/transform_parser.h"
-#include "core/scene/xml_reader.h"
 
 namespace caustica {
 

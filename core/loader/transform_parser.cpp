@@ -1,4 +1,4 @@
-#include "core/scene/transform_parser.h"
+#include "core/loader/transform_parser.h"
 
 #include <stdexcept>
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/scene/xml_node.h"
+#include "core/loader/xml_node.h"
 
 namespace caustica {
 

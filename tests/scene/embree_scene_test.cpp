@@ -1,4 +1,4 @@
-#include "core/geometry/embree_scene.h"
+#include "core/scene/embree_scene.h"
 
 #include <gtest/gtest.h>
 

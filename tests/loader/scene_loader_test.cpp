@@ -1,4 +1,4 @@
-#include "core/scene/scene_loader.h"
+#include "core/loader/scene_loader.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "core/scene/xml_reader.h"
+#include "core/loader/xml_reader.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
