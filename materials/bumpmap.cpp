@@ -1,11 +1,5 @@
 // bumpmap: fine relief from a height texture, by tilting the shading normal.
 //
-// Parameters
-//   scale     float    1  multiplies the height (in the surface's own units
-//                         per unit of u and v, as dp/du and dp/dv measure them)
-//   (nested)  texture     the height field; its luminance is used
-//   (nested)  bsdf        the material evaluated in the perturbed frame
-//
 // The displaced surface is p + n scale h(u, v); its tangents are
 // dp/du + n scale dh/du and dp/dv + n scale dh/dv (the tangents first made
 // perpendicular to n), and their cross product, oriented to the side of n,
@@ -17,6 +11,11 @@
 // of the perturbed one (and the converse) carry nothing, so no light leaks
 // through the relief; the nested BSDF's cosine is taken about n', so the
 // result is not reciprocal in general and can lose energy at grazing angles.
+//
+// The nested texture is the height field h (its luminance is used), the
+// nested bsdf the material evaluated in the perturbed frame. scale times h
+// is a height in the surface's own units per unit of u and v, as dp/du and
+// dp/dv measure them.
 //
 //   <bsdf type="bumpmap">
 //       <texture type="bitmap">
@@ -68,7 +67,8 @@ class BumpMapBsdf final : public PerturbedFrameBsdf {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(BumpMapBsdf, "bsdf", "bumpmap", {{"scale", ParamType::Float, "1", "height scale"}},
+CAUSTICA_REGISTER_PLUGIN(BumpMapBsdf, "bsdf", "bumpmap",
+                         {{"scale", ParamType::Float, "1", "multiplies the height (the texture's luminance)"}},
                          {"texture", "bsdf"});
 
 }  // namespace caustica

@@ -1,13 +1,6 @@
 // conductor: a smooth metal, a perfect mirror weighted by the Fresnel
 // reflectance of a conductor with complex index of refraction eta + i k.
 //
-// Parameters
-//   material              string   none  a metal by chemical symbol (Ag, Al, Au, Cu), or
-//                                        none: eta and k are given, by default a perfect mirror
-//   eta                   color    0     real part of the index, per channel
-//   k                     color    1     imaginary part (absorption), per channel
-//   specular_reflectance  texture  1     multiplies the reflectance (not physical)
-//
 // Give either `material` or `eta` and `k`. With the defaults (eta 0, k 1)
 // the Fresnel reflectance is 1 at every angle. One-sided: light arriving
 // from below the shading normal is not reflected.
@@ -58,11 +51,12 @@ class ConductorBsdf final : public DeltaBsdf {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(ConductorBsdf, "bsdf", "conductor",
-                         {{"material", ParamType::String, "none", "named metal, or none for eta and k"},
-                          {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
-                          {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
-                          {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    ConductorBsdf, "bsdf", "conductor",
+    {{"material", ParamType::String, "none", "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
+     {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
+     {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
+     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"}},
+    {});
 
 }  // namespace caustica

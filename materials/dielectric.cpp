@@ -18,13 +18,6 @@
 // Indices equal (int_ior = ext_ior) make an index-matched, invisible
 // interface: nothing is reflected and light passes straight through.
 //
-// Parameters
-//   int_ior                 ior      "bk7"  index of refraction inside (below the normal);
-//                                           a number or a name such as "water"
-//   ext_ior                 ior      "air"  index of refraction outside
-//   specular_reflectance    texture  1      scales the reflected light (1 is physical)
-//   specular_transmittance  texture  1      scales the transmitted light (1 is physical)
-//
 //   <bsdf type="dielectric">
 //       <string name="int_ior" value="water"/>
 //       <float name="ext_ior" value="1.0"/>
@@ -80,11 +73,13 @@ class DielectricBsdf final : public DeltaBsdf {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(DielectricBsdf, "bsdf", "dielectric",
-                         {{"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
-                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
-                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    DielectricBsdf, "bsdf", "dielectric",
+    {{"int_ior", ParamType::Ior, "bk7",
+      "index of refraction inside (below the normal); a number or a name such as water"},
+     {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+     {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light (1 is physical)"},
+     {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light (1 is physical)"}},
+    {});
 
 }  // namespace caustica

@@ -1,8 +1,5 @@
 // diffuse: the ideal Lambertian reflector, f = reflectance / pi.
 //
-// Parameters
-//   reflectance  texture  0.5  fraction of light scattered, per channel
-//
 // One-sided: light arriving from below the shading normal is not reflected
 // (wrap it in `twosided` for sheets seen from both sides).
 //
@@ -54,6 +51,8 @@ class DiffuseBsdf final : public Bsdf {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DiffuseBsdf, "bsdf", "diffuse",
-                         {{"reflectance", ParamType::Texture, "0.5", "diffuse reflectance"}}, {});
+                         {{"reflectance", ParamType::Texture, "0.5",
+                           "diffuse reflectance: the fraction of light scattered, per channel"}},
+                         {});
 
 }  // namespace caustica

@@ -1,10 +1,5 @@
 // mask: makes a surface partly transparent (leaves, fences, cut-outs).
 //
-// Parameters
-//   opacity  texture  0.5  fraction of light the nested BSDF scatters; the
-//                          rest passes straight through the surface
-//   (nested) bsdf          the material where the surface is opaque
-//
 // With probability `opacity` (the texture's luminance, as Mitsuba, clamped
 // to [0, 1]) light meets the nested BSDF, otherwise it continues unchanged
 // in its direction: an index-matched pass-through, a delta transmission lobe
@@ -83,7 +78,8 @@ class MaskBsdf final : public Bsdf {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(MaskBsdf, "bsdf", "mask",
-                         {{"opacity", ParamType::Texture, "0.5", "fraction of light the nested bsdf scatters"}},
+                         {{"opacity", ParamType::Texture, "0.5",
+                           "fraction of light the nested bsdf scatters; the rest passes straight through"}},
                          {"bsdf"});
 
 }  // namespace caustica

@@ -1,10 +1,5 @@
 // normalmap: shading normals read from a tangent-space normal map.
 //
-// Parameters
-//   normalmap  texture  (required)  RGB normal map; load a bitmap with
-//                                   raw="true" so its values stay as stored
-//   (nested)   bsdf                 the material evaluated in the perturbed frame
-//
 // A colour c decodes to the normal 2 c - 1 in the tangent frame (s, t, n):
 // s along dp/du (made perpendicular to the shading normal n), t = n x s. So
 // (0.5, 0.5, 1) leaves the surface as it is, and red tilts the normal toward
@@ -55,6 +50,8 @@ class NormalMapBsdf final : public PerturbedFrameBsdf {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(NormalMapBsdf, "bsdf", "normalmap",
-                         {{"normalmap", ParamType::Texture, std::nullopt, "tangent-space normal map"}}, {"bsdf"});
+                         {{"normalmap", ParamType::Texture, std::nullopt,
+                           "tangent-space RGB normal map; load a bitmap with raw=true so its values stay as stored"}},
+                         {"bsdf"});
 
 }  // namespace caustica

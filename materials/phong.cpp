@@ -9,11 +9,6 @@
 // from any direction (the part of the cos^n lobe below the horizon is lost),
 // so kd + ks must not exceed 1 in any channel.
 //
-// Parameters
-//   diffuse_reflectance   texture  0.5  kd, the diffuse part
-//   specular_reflectance  texture  0.2  ks, the glossy part
-//   exponent              float    30   n, the lobe's sharpness (0 or more)
-//
 // kd + ks is checked against 1 on the textures' means (exactly, for
 // constant values). Sampling picks the glossy lobe with probability
 // mean(ks) / (mean(kd) + mean(ks)) at the shading point, then samples cos^n
@@ -124,7 +119,7 @@ class PhongBsdf final : public Bsdf {
 CAUSTICA_REGISTER_PLUGIN(PhongBsdf, "bsdf", "phong",
                          {{"diffuse_reflectance", ParamType::Texture, "0.5", "diffuse reflectance kd"},
                           {"specular_reflectance", ParamType::Texture, "0.2", "glossy reflectance ks"},
-                          {"exponent", ParamType::Float, "30", "Phong exponent n"}},
+                          {"exponent", ParamType::Float, "30", "Phong exponent n, the lobe's sharpness (0 or more)"}},
                          {});
 
 }  // namespace caustica

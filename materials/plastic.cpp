@@ -16,13 +16,6 @@
 // do. With kd = ks = 1 both reflect all light. F_dr is integrated
 // numerically from the Fresnel equations once per material.
 //
-// Parameters
-//   diffuse_reflectance   texture  0.5              kd, the base's reflectance
-//   specular_reflectance  texture  1                ks, scales the mirror reflection
-//   int_ior               ior      "polypropylene"  index of the coating (number or name)
-//   ext_ior               ior      "air"            index of the outside medium
-//   nonlinear             boolean  false            account for the base's colour in the internal bounces
-//
 // Sampling picks the mirror reflection with probability
 //   F(wo) mean(ks) / (F(wo) mean(ks) + (1 - F(wo)) mean(kd)),
 // the share of the reflected light each part carries (up to the base's
@@ -122,12 +115,13 @@ class PlasticBsdf final : public Bsdf {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(PlasticBsdf, "bsdf", "plastic",
-                         {{"diffuse_reflectance", ParamType::Texture, "0.5", "reflectance of the diffuse base"},
-                          {"specular_reflectance", ParamType::Texture, "1", "scale of the coating's reflection"},
-                          {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating"},
-                          {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                          {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    PlasticBsdf, "bsdf", "plastic",
+    {{"diffuse_reflectance", ParamType::Texture, "0.5", "kd, the reflectance of the diffuse base"},
+     {"specular_reflectance", ParamType::Texture, "1", "ks, scales the coating's mirror reflection"},
+     {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating (a number or a name)"},
+     {"ext_ior", ParamType::Ior, "air", "index of refraction of the outside medium"},
+     {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}},
+    {});
 
 }  // namespace caustica

@@ -5,18 +5,14 @@
 // height-correlated masking-shadowing. Light scattered more than once
 // between the facets is lost, so rough surfaces come out a little dark.
 //
-// Parameters
-//   distribution          string   beckmann  beckmann or ggx
-//   alpha                 float    0.1       roughness (standard deviation of slopes, scaled)
-//   alpha_u, alpha_v      float    alpha     anisotropic roughness along the tangent and bitangent
-//   material              string   none      a metal by chemical symbol (Ag, Al, Au, Cu), or
-//                                            none: eta and k are given, by default a perfect mirror
-//   eta                   color    0         real part of the index, per channel
-//   k                     color    1         imaginary part (absorption), per channel
-//   specular_reflectance  texture  1         multiplies the reflectance (not physical)
-//   sample_visible        boolean  true      sample only the normals visible from wo
+// Give either `material` or `eta` and `k`; with the defaults (eta 0, k 1)
+// the Fresnel reflectance is 1 at every angle. One-sided: light arriving
+// from below the shading normal is not reflected.
 //
-// One-sided: light arriving from below the shading normal is not reflected.
+// `distribution` is beckmann or ggx; alpha is the roughness (the root mean
+// square slope of the facets for beckmann). alpha_u and alpha_v make it
+// anisotropic, along the tangent and the bitangent: give both or neither,
+// and not together with alpha; without them both are alpha.
 //
 //   <bsdf type="roughconductor">
 //       <string name="material" value="Al"/>
@@ -105,11 +101,12 @@ class RoughConductorBsdf final : public Bsdf {
 
 std::vector<ParamSpec> params() {
   auto p = microfacet_params(true);
-  p.insert(p.end(), {{"material", ParamType::String, "none", "named metal, or none for eta and k"},
-                     {"eta", ParamType::Color, "0", "real part of the complex index of refraction"},
-                     {"k", ParamType::Color, "1", "imaginary part of the complex index of refraction"},
-                     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance"},
-                     {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}});
+  p.insert(p.end(), {{"material", ParamType::String, "none",
+                      "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
+                     {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
+                     {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
+                     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"},
+                     {"sample_visible", ParamType::Boolean, "true", "sample only the facet normals visible from wo"}});
   return p;
 }
 

@@ -25,17 +25,10 @@
 // Equal indices make the facets invisible: light passes straight through as
 // a delta transmission lobe, as for `dielectric`.
 //
-// Parameters
-//   distribution            string   "beckmann"  microfacet distribution: "beckmann" or "ggx"
-//   alpha                   float    0.1         roughness (the RMS slope for Beckmann)
-//   sample_visible          boolean  true        sample only the facet normals visible from wo
-//   alpha_u, alpha_v        float    -           anisotropic roughness along the tangent and
-//                                                the bitangent, instead of alpha; both or neither
-//   int_ior                 ior      "bk7"       index of refraction inside (below the normal);
-//                                                a number or a name such as "water"
-//   ext_ior                 ior      "air"       index of refraction outside
-//   specular_reflectance    texture  1           scales the reflected light (1 is physical)
-//   specular_transmittance  texture  1           scales the transmitted light (1 is physical)
+// `distribution` is beckmann or ggx; alpha is the roughness (the root mean
+// square slope of the facets for beckmann). alpha_u and alpha_v make it
+// anisotropic, along the tangent and the bitangent: give both or neither,
+// and not together with alpha; without them both are alpha.
 //
 //   <bsdf type="roughdielectric">
 //       <string name="distribution" value="ggx"/>
@@ -161,11 +154,13 @@ class RoughDielectricBsdf final : public Bsdf {
 
 std::vector<ParamSpec> params() {
   auto p = microfacet_params(true);
-  p.insert(p.end(), {{"int_ior", ParamType::Ior, "bk7", "index of refraction inside"},
-                     {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                     {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
-                     {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"},
-                     {"sample_visible", ParamType::Boolean, "true", "sample visible normals only"}});
+  p.insert(p.end(),
+           {{"int_ior", ParamType::Ior, "bk7",
+             "index of refraction inside (below the normal); a number or a name such as water"},
+            {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+            {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light (1 is physical)"},
+            {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light (1 is physical)"},
+            {"sample_visible", ParamType::Boolean, "true", "sample only the facet normals visible from wo"}});
   return p;
 }
 

@@ -23,20 +23,14 @@
 // leaving through a rough interface is not traced), but it is reciprocal
 // and reflects exactly ks E(wo) + kd' (1 - F_dr) (1 - E(wo)), at most 1.
 //
-// Parameters
-//   distribution          string   "beckmann"       microfacet distribution: beckmann or ggx
-//   alpha                 float    0.1              roughness (root mean square slope for beckmann)
-//   diffuse_reflectance   texture  0.5              kd, the base's reflectance
-//   specular_reflectance  texture  1                ks, scales the coating's reflection
-//   int_ior               ior      "polypropylene"  index of the coating (number or name)
-//   ext_ior               ior      "air"            index of the outside medium
-//   nonlinear             boolean  false            account for the base's colour in the internal bounces
-//
 // Sampling reflects wo about a microfacet normal drawn from the
 // distribution (its visible normals for ggx) with probability
 //   E(wo) mean(ks) / (E(wo) mean(ks) + (1 - E(wo)) mean(kd)),
 // and samples the cosine-weighted hemisphere otherwise; pdf() is the
 // mixture. One-sided: nothing is reflected from below the normal.
+//
+// `distribution` is beckmann or ggx; alpha is the roughness (the root mean
+// square slope of the facets for beckmann).
 //
 //   <bsdf type="roughplastic">
 //       <string name="distribution" value="ggx"/>
@@ -198,11 +192,12 @@ class RoughPlasticBsdf final : public Bsdf {
 
 std::vector<ParamSpec> params() {
   auto p = microfacet_params(false);
-  p.insert(p.end(), {{"diffuse_reflectance", ParamType::Texture, "0.5", "reflectance of the diffuse base"},
-                     {"specular_reflectance", ParamType::Texture, "1", "scale of the coating's reflection"},
-                     {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating"},
-                     {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
-                     {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}});
+  p.insert(p.end(),
+           {{"diffuse_reflectance", ParamType::Texture, "0.5", "kd, the reflectance of the diffuse base"},
+            {"specular_reflectance", ParamType::Texture, "1", "ks, scales the coating's reflection"},
+            {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating (a number or a name)"},
+            {"ext_ior", ParamType::Ior, "air", "index of refraction of the outside medium"},
+            {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}});
   return p;
 }
 

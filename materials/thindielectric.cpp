@@ -12,13 +12,6 @@
 // specular_reflectance or specular_transmittance. The sheet looks the same
 // from both sides.
 //
-// Parameters
-//   int_ior                 ior      "bk7"  index of refraction of the sheet;
-//                                           a number or a name such as "water"
-//   ext_ior                 ior      "air"  index of refraction around it
-//   specular_reflectance    texture  1      scales the reflected light (1 is physical)
-//   specular_transmittance  texture  1      scales the transmitted light (1 is physical)
-//
 //   <bsdf type="thindielectric">
 //       <string name="int_ior" value="bk7"/>
 //   </bsdf>
@@ -69,11 +62,12 @@ class ThinDielectricBsdf final : public DeltaBsdf {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(ThinDielectricBsdf, "bsdf", "thindielectric",
-                         {{"int_ior", ParamType::Ior, "bk7", "index of refraction of the sheet"},
-                          {"ext_ior", ParamType::Ior, "air", "index of refraction around it"},
-                          {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light"},
-                          {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    ThinDielectricBsdf, "bsdf", "thindielectric",
+    {{"int_ior", ParamType::Ior, "bk7", "index of refraction of the sheet; a number or a name such as water"},
+     {"ext_ior", ParamType::Ior, "air", "index of refraction around it"},
+     {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light (1 is physical)"},
+     {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light (1 is physical)"}},
+    {});
 
 }  // namespace caustica

@@ -1,13 +1,7 @@
 // perspective: a pinhole camera.
 //
-// Parameters
-//   fov             float      39.6        field of view in degrees, along fov_axis (50 mm lens)
-//   fov_axis        string     x           x, y, diagonal, smaller or larger
-//   near_clip       float      0.01        distance of the near plane
-//   far_clip        float      10000       distance of the far plane
-//   focus_distance  float      0           accepted for compatibility; a pinhole is always in focus
-//   to_world        transform  identity    camera looks along local +z, +y up, +x left
-//   (nested film and sampler; hdrfilm and independent when absent)
+// Without a nested film it uses an hdrfilm, and without a nested sampler an
+// independent sampler, each with its default parameters.
 //
 //   <sensor type="perspective">
 //       <float name="fov" value="39.3"/>
@@ -122,14 +116,14 @@ class PerspectiveSensor final : public Sensor {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(PerspectiveSensor, "sensor", "perspective",
-                         {{"fov", ParamType::Float, "39.597755",
-                           "field of view in degrees (a 50 mm lens on 35 mm film)"},
-                          {"fov_axis", ParamType::String, "x", "axis the fov applies to"},
-                          {"near_clip", ParamType::Float, "0.01", "near plane distance"},
-                          {"far_clip", ParamType::Float, "10000", "far plane distance"},
-                          {"focus_distance", ParamType::Float, "0", "ignored by a pinhole"},
-                          {"to_world", ParamType::Transform, "", "camera placement"}},
-                         {"film", "sampler"});
+CAUSTICA_REGISTER_PLUGIN(
+    PerspectiveSensor, "sensor", "perspective",
+    {{"fov", ParamType::Float, "39.597755", "field of view in degrees along fov_axis (a 50 mm lens on 35 mm film)"},
+     {"fov_axis", ParamType::String, "x", "axis the fov applies to: x, y, diagonal, smaller or larger"},
+     {"near_clip", ParamType::Float, "0.01", "near plane distance"},
+     {"far_clip", ParamType::Float, "10000", "far plane distance"},
+     {"focus_distance", ParamType::Float, "0", "accepted for compatibility and ignored; a pinhole is always in focus"},
+     {"to_world", ParamType::Transform, "", "camera placement; it looks along local +z, with +y up and +x left"}},
+    {"film", "sampler"});
 
 }  // namespace caustica

@@ -7,6 +7,7 @@
 #include "core/cli/compare_command.h"
 #include "core/cli/info_command.h"
 #include "core/cli/merge_command.h"
+#include "core/cli/plugins_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/tonemap_command.h"
 
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
   merge.add_to(app);
   caustica::CompareCommand compare;
   compare.add_to(app);
+  caustica::PluginsCommand plugins;
+  plugins.add_to(app);
   CLI11_PARSE(app, argc, argv);
   try {
     if (render.chosen()) return render.run();
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
     if (tonemap.chosen()) return tonemap.run();
     if (merge.chosen()) return merge.run();
     if (compare.chosen()) return compare.run();
+    if (plugins.chosen()) return plugins.run();
   } catch (const std::exception& e) {
     std::cerr << "caustica: error: " << e.what() << "\n";
     return 1;

@@ -6,9 +6,6 @@
 // and gamut mapping; use it with the Standard view (the config's ACES view
 // already contains the same transform, for use with tonemap none).
 //
-// Parameters
-//   exposure  float  0  stops
-//
 //   <tonemap type="aces"/>
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -57,8 +54,6 @@ class AcesTonemap final : public ToneOperator {
     // slightly outside [0, 1].
     for (float& v : rgb) v = std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f);
   }
-
-  std::string describe() const override { return "aces"; }
 
  private:
   OCIO::ConstCPUProcessorRcPtr processor_;

@@ -6,11 +6,6 @@
 // angle), D = 0.20 (toe strength), E = 0.02, F = 0.30 (toe numerator and
 // denominator). Scene values at white / bias map to 1.
 //
-// Parameters
-//   bias      float  2     exposure bias before the curve
-//   white     float  11.2  linear white point of the curve
-//   exposure  float  0     stops
-//
 //   <tonemap type="filmic"/>
 
 #include <algorithm>
@@ -34,10 +29,6 @@ class FilmicTonemap final : public ToneOperator {
     for (float& v : rgb) v = float(std::min(1.0, curve(double(bias_) * sanitize_radiance(v)) * inv_white));
   }
 
-  std::string describe() const override {
-    return "filmic bias=" + std::to_string(bias_) + " white=" + std::to_string(white_);
-  }
-
  private:
   static double curve(double x) {
     constexpr double A = 0.15, B = 0.50, C = 0.10, D = 0.20, E = 0.02, F = 0.30;
@@ -51,7 +42,7 @@ class FilmicTonemap final : public ToneOperator {
 
 CAUSTICA_REGISTER_PLUGIN(FilmicTonemap, "tonemap", "filmic",
                          tone_operator_params({{"bias", ParamType::Float, "2", "exposure bias before the curve"},
-                                               {"white", ParamType::Float, "11.2", "linear white point"}}),
+                                               {"white", ParamType::Float, "11.2", "linear white point of the curve"}}),
                          {});
 
 }  // namespace caustica

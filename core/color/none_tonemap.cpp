@@ -1,8 +1,5 @@
 // none: no tone curve; display values are the scene values clipped to [0, 1].
 //
-// Parameters
-//   exposure  float  0  stops
-//
 //   <tonemap type="none"><float name="exposure" value="1"/></tonemap>
 
 #include <algorithm>
@@ -20,7 +17,6 @@ class NoneTonemap final : public ToneOperator {
   void apply(std::vector<float>& rgb) const override {
     for (float& v : rgb) v = std::min(sanitize_radiance(v), 1.0f);
   }
-  std::string describe() const override { return "none"; }
 };
 
 }  // namespace

@@ -7,11 +7,6 @@
 // and the pixel's RGB is scaled by Ld / Lw (hue is kept). Values at L_white
 // map to 1; L_white = 0 takes the image's largest scaled luminance.
 //
-// Parameters
-//   key       float  0.18  where the log-average luminance lands (middle grey)
-//   white     float  0     scaled luminance that maps to white; 0: the image maximum
-//   exposure  float  0     stops
-//
 //   <tonemap type="reinhard"><float name="key" value="0.18"/></tonemap>
 
 #include <algorithm>
@@ -55,10 +50,6 @@ class ReinhardTonemap final : public ToneOperator {
     }
   }
 
-  std::string describe() const override {
-    return "reinhard key=" + std::to_string(key_) + " white=" + std::to_string(white_);
-  }
-
  private:
   static double luminance(const std::vector<float>& rgb, size_t p) {
     return Color(rgb[p * 3], rgb[p * 3 + 1], rgb[p * 3 + 2]).luminance();
@@ -70,8 +61,10 @@ class ReinhardTonemap final : public ToneOperator {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ReinhardTonemap, "tonemap", "reinhard",
-                         tone_operator_params({{"key", ParamType::Float, "0.18", "key value (middle grey)"},
-                                               {"white", ParamType::Float, "0", "white point; 0: image maximum"}}),
+                         tone_operator_params({{"key", ParamType::Float, "0.18",
+                                                "key value: where the log-average luminance lands (middle grey)"},
+                                               {"white", ParamType::Float, "0",
+                                                "scaled luminance that maps to white; 0: the image maximum"}}),
                          {});
 
 }  // namespace caustica

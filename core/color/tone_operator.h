@@ -21,7 +21,8 @@ class ToneOperator : public Plugin {
 
   // In place, on pixel-interleaved RGB.
   virtual void apply(std::vector<float>& rgb) const = 0;
-  virtual std::string describe() const = 0;
+  // Its name and curve parameters; the exposure is the developer's to report.
+  std::string describe() const { return describe_parameters("exposure"); }
   // Exposure in stops, applied before the operator (2^exposure).
   float exposure() const { return exposure_; }
   void set_exposure(float ev) { exposure_ = ev; }

@@ -1,8 +1,5 @@
 // box: every sample inside the pixel counts equally.
 //
-// Parameters
-//   radius  float  0.5  half-width in pixels
-//
 //   <rfilter type="box"/>
 
 #include "core/film/reconstruction_filter.h"
@@ -23,6 +20,7 @@ class BoxFilter final : public ReconstructionFilter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(BoxFilter, "rfilter", "box", {{"radius", ParamType::Float, "0.5", "half-width"}}, {});
+CAUSTICA_REGISTER_PLUGIN(BoxFilter, "rfilter", "box", {{"radius", ParamType::Float, "0.5", "half-width in pixels"}},
+                         {});
 
 }  // namespace caustica

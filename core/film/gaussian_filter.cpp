@@ -1,8 +1,5 @@
 // gaussian: exp(-x^2 / (2 stddev^2)) along each axis, cut off at 4 stddev.
 //
-// Parameters
-//   stddev  float  0.5  standard deviation in pixels
-//
 //   <rfilter type="gaussian"><float name="stddev" value="0.5"/></rfilter>
 
 #include <cmath>

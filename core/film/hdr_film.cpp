@@ -1,11 +1,7 @@
 // hdrfilm: a linear, high-dynamic-range film written as OpenEXR.
 //
-// Parameters
-//   width             integer  768      pixels
-//   height            integer  576      pixels
-//   pixel_format      string   rgb      rgb or rgba (alpha is written as 1)
-//   component_format  string   float16  float16 or float32
-//   (nested rfilter: box, tent or gaussian; gaussian when absent)
+// A nested rfilter (box, tent or gaussian) reconstructs the pixels from the
+// samples; without one it is a gaussian with its default parameters.
 //
 //   <film type="hdrfilm">
 //       <integer name="width" value="512"/>
@@ -56,7 +52,8 @@ class HdrFilm final : public Film {
 CAUSTICA_REGISTER_PLUGIN(HdrFilm, "film", "hdrfilm",
                          {{"width", ParamType::Integer, "768", "width in pixels"},
                           {"height", ParamType::Integer, "576", "height in pixels"},
-                          {"pixel_format", ParamType::String, "rgb", "rgb or rgba"},
+                          {"pixel_format", ParamType::String, "rgb",
+                           "rgb or rgba (rgba is accepted, but no alpha channel is written)"},
                           {"component_format", ParamType::String, "float16", "float16 or float32"}},
                          {"rfilter"});
 

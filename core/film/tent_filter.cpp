@@ -1,8 +1,5 @@
 // tent: the triangle filter max(0, 1 - |x| / radius) along each axis.
 //
-// Parameters
-//   radius  float  1  half-width in pixels
-//
 //   <rfilter type="tent"/>
 
 #include <algorithm>
@@ -26,6 +23,7 @@ class TentFilter final : public ReconstructionFilter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(TentFilter, "rfilter", "tent", {{"radius", ParamType::Float, "1", "half-width"}}, {});
+CAUSTICA_REGISTER_PLUGIN(TentFilter, "rfilter", "tent", {{"radius", ParamType::Float, "1", "half-width in pixels"}},
+                         {});
 
 }  // namespace caustica

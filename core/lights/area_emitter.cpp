@@ -2,9 +2,6 @@
 // the side its normals point to (the geometric normal, turned to the side of
 // the shading normal where a mesh has vertex normals).
 //
-// Parameters
-//   radiance  rgb  (required)  emitted radiance
-//
 //   <shape type="rectangle">
 //       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
 //   </shape>

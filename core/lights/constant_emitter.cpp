@@ -1,8 +1,5 @@
 // constant: a uniform environment, radiance arriving equally from every direction.
 //
-// Parameters
-//   radiance  rgb  1  environment radiance
-//
 //   <emitter type="constant"><rgb name="radiance" value="0.5"/></emitter>
 
 #include "core/lights/emitter.h"

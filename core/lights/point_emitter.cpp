@@ -1,10 +1,5 @@
 // point: an isotropic point light.
 //
-// Parameters
-//   intensity  rgb        1        radiant intensity (W/sr per channel)
-//   position   point      0, 0, 0  where it is (alternatively to_world)
-//   to_world   transform  identity the light sits at to_world applied to the origin
-//
 //   <emitter type="point">
 //       <point name="position" value="0, 1.9, 0"/>
 //       <rgb name="intensity" value="10"/>
@@ -54,10 +49,11 @@ class PointEmitter final : public Emitter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(PointEmitter, "emitter", "point",
-                         {{"intensity", ParamType::Color, "1", "radiant intensity"},
-                          {"position", ParamType::Point, "0, 0, 0", "position"},
-                          {"to_world", ParamType::Transform, "", "placement"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    PointEmitter, "emitter", "point",
+    {{"intensity", ParamType::Color, "1", "radiant intensity, W/sr per channel"},
+     {"position", ParamType::Point, "0, 0, 0", "position, before to_world (give this or to_world)"},
+     {"to_world", ParamType::Transform, "", "placement: the light sits at to_world applied to position"}},
+    {});
 
 }  // namespace caustica

@@ -58,21 +58,83 @@ PropertyValue Properties::value(const std::string& name, ParamType wanted) const
   return parse_value_text(default_kind(wanted), *spec->default_value, where_);
 }
 
-bool Properties::get_bool(const std::string& name) const {
-  return std::get<bool>(value(name, ParamType::Boolean).value);
-}
+namespace {
 
-int64_t Properties::get_int(const std::string& name) const {
-  return std::get<int64_t>(value(name, ParamType::Integer).value);
-}
+std::string bool_text(bool b) { return b ? "true" : "false"; }
 
-float Properties::get_float(const std::string& name) const {
-  const PropertyValue v = value(name, ParamType::Float);
+float as_float(const PropertyValue& v) {
   return v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
 }
 
+}  // namespace
+
+void Properties::record(const std::string& name, std::string text) const {
+  for (auto& [key, value] : read_)
+    if (key == name) {
+      value = std::move(text);
+      return;
+    }
+  read_.emplace_back(name, std::move(text));
+}
+
+bool Properties::get_bool(const std::string& name) const {
+  const bool b = std::get<bool>(value(name, ParamType::Boolean).value);
+  record(name, bool_text(b));
+  return b;
+}
+
+int64_t Properties::get_int(const std::string& name) const {
+  const int64_t i = std::get<int64_t>(value(name, ParamType::Integer).value);
+  record(name, std::to_string(i));
+  return i;
+}
+
+int64_t Properties::get_int_or(const std::string& name, int64_t fallback) const {
+  const int64_t i = has(name) ? std::get<int64_t>(value(name, ParamType::Integer).value) : fallback;
+  record(name, std::to_string(i));
+  return i;
+}
+
+float Properties::get_float(const std::string& name) const {
+  const float f = as_float(value(name, ParamType::Float));
+  record(name, std::to_string(f));
+  return f;
+}
+
 std::string Properties::get_string(const std::string& name) const {
-  return std::get<std::string>(value(name, ParamType::String).value);
+  std::string text = std::get<std::string>(value(name, ParamType::String).value);
+  record(name, text);
+  return text;
+}
+
+std::vector<std::pair<std::string, std::string>> Properties::effective_parameters() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const ParamSpec& spec : info_->params) {
+    const auto read = std::find_if(read_.begin(), read_.end(), [&](const auto& r) { return r.first == spec.name; });
+    if (read != read_.end()) {
+      out.push_back(*read);
+      continue;
+    }
+    if (!has(spec.name) && !spec.default_value) continue;
+    const PropertyValue v = value(spec.name, spec.type);
+    switch (spec.type) {
+      case ParamType::Boolean:
+        out.emplace_back(spec.name, bool_text(std::get<bool>(v.value)));
+        break;
+      case ParamType::Integer:
+        out.emplace_back(spec.name, std::to_string(std::get<int64_t>(v.value)));
+        break;
+      case ParamType::Float:
+        out.emplace_back(spec.name, std::to_string(as_float(v)));
+        break;
+      case ParamType::String:
+        out.emplace_back(spec.name, std::get<std::string>(v.value));
+        break;
+      default:
+        break;
+    }
+  }
+  return out;
 }
 
 std::filesystem::path Properties::get_path(const std::string& name) const {

@@ -31,8 +31,13 @@ class Properties {
   const SourceLocation& where() const { return where_; }
   bool has(const std::string& name) const { return find(name) != nullptr; }
 
+  // Each getter records the value it returns as the parameter's effective
+  // value (effective_parameters()).
   bool get_bool(const std::string& name) const;
   int64_t get_int(const std::string& name) const;
+  // The value given, else `fallback` (not the declared default): for
+  // parameters whose default is another parameter's value.
+  int64_t get_int_or(const std::string& name, int64_t fallback) const;
   float get_float(const std::string& name) const;
   std::string get_string(const std::string& name) const;
   // A string naming a file, resolved against the folder of the scene file it was written in.
@@ -61,6 +66,12 @@ class Properties {
   // declared default (parsed), else a SceneError as the parameter is required.
   PropertyValue value(const std::string& name, ParamType wanted) const;
 
+  // The effective value of every scalar (boolean, integer, float, string)
+  // parameter the plugin declares, in declaration order: what its getters
+  // returned, else the value given or declared; required ones never given
+  // are left out.
+  std::vector<std::pair<std::string, std::string>> effective_parameters() const;
+
   // An error about parameter `name`, placed where it was written (or at the
   // plugin if it was left at its default).
   SceneError error(const std::string& name, const std::string& problem) const;
@@ -72,6 +83,8 @@ class Properties {
   SourceLocation where_;
   std::vector<std::pair<std::string, PropertyValue>> values_;
   std::vector<std::pair<ObjectValue, SourceLocation>> children_;
+  mutable std::vector<std::pair<std::string, std::string>> read_;  // effective values, as the getters returned them
+  void record(const std::string& name, std::string value) const;
 };
 
 template <class T>

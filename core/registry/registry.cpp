@@ -59,6 +59,13 @@ const PluginInfo* Registry::find(const std::string& category, const std::string&
   return it == plugins_.end() ? nullptr : &it->second;
 }
 
+std::vector<std::string> Registry::categories() const {
+  std::vector<std::string> out;
+  for (const auto& [key, info] : plugins_)
+    if (out.empty() || out.back() != key.first) out.push_back(key.first);
+  return out;
+}
+
 std::vector<std::string> Registry::names(const std::string& category) const {
   std::vector<std::string> out;
   for (const auto& [key, info] : plugins_)

@@ -34,6 +34,8 @@ class Registry {
   bool add(PluginInfo info);
   const PluginInfo* find(const std::string& category, const std::string& name) const;
   std::vector<std::string> names(const std::string& category) const;
+  // Every category that has a plugin, in alphabetical order.
+  std::vector<std::string> categories() const;
   // The plugin with every parameter at its default, for objects a scene may
   // leave out (a film's filter, a shape's material). `where` is blamed for errors.
   template <class T>
@@ -49,10 +51,13 @@ class Registry {
 // "a, b, c", or "none" for an empty list: for messages that list what is accepted.
 std::string join_names(const std::vector<std::string>& names);
 
-#define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                               \
-  [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add(   \
-      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {        \
-                               return std::shared_ptr<::caustica::Plugin>(std::make_shared<Class>(props)); \
+// The plugin made records its effective parameters (Plugin::parameters()).
+#define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                             \
+  [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add( \
+      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {      \
+                               auto plugin = std::make_shared<Class>(props);                             \
+                               plugin->set_parameters(name, props.effective_parameters());               \
+                               return std::shared_ptr<::caustica::Plugin>(std::move(plugin));            \
                              }})
 
 }  // namespace caustica

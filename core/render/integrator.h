@@ -73,8 +73,8 @@ class Integrator : public Plugin {
   // What it will do with this scene and what it skips as the scene does not
   // need it, in a line or two; for `caustica info` and the render log.
   virtual std::string plan(const Scene&) const { return ""; }
-  // Parameters as written back into the output's metadata.
-  virtual std::string describe() const = 0;
+  // Its name and parameters, for the output's metadata.
+  std::string describe() const { return describe_parameters(); }
   // Starts a render of `scene` with the render's seed.
   virtual std::unique_ptr<IntegratorRun> start(const Scene& scene, uint64_t seed) const = 0;
 };

@@ -17,18 +17,14 @@ PathSettings read_path_settings(const Properties& props) {
 }
 
 std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more) {
-  std::vector<ParamSpec> params{{"max_depth", ParamType::Integer, "-1", "longest path, -1 for unlimited"},
-                                {"rr_depth", ParamType::Integer, "5", "depth where Russian roulette starts"},
-                                {"rr_max_survival", ParamType::Float, "0.95", "bound on the survival probability"},
-                                {"hide_emitters", ParamType::Boolean, "false", "hide directly visible emitters"}};
+  std::vector<ParamSpec> params{
+      {"max_depth", ParamType::Integer, "-1",
+       "longest path in segments; -1 for no limit, 0 renders black, 1 emitters only, 2 direct light only"},
+      {"rr_depth", ParamType::Integer, "5", "path vertices before Russian roulette may end a path"},
+      {"rr_max_survival", ParamType::Float, "0.95", "upper bound on the survival probability, in (0, 1]"},
+      {"hide_emitters", ParamType::Boolean, "false", "emitters seen directly by the camera appear black"}};
   params.insert(params.end(), more.begin(), more.end());
   return params;
-}
-
-std::string describe(const std::string& integrator, const PathSettings& s) {
-  return integrator + " max_depth=" + std::to_string(s.max_depth) + " rr_depth=" + std::to_string(s.rr_depth) +
-         " rr_max_survival=" + std::to_string(s.rr_max_survival) +
-         " hide_emitters=" + (s.hide_emitters ? "true" : "false");
 }
 
 }  // namespace caustica

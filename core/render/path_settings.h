@@ -29,7 +29,4 @@ PathSettings read_path_settings(const Properties& props);
 // The declarations of those parameters, followed by `more`.
 std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more = {});
 
-// "NAME max_depth=... rr_depth=... rr_max_survival=... hide_emitters=...", for metadata.
-std::string describe(const std::string& integrator, const PathSettings& settings);
-
 }  // namespace caustica

@@ -2,10 +2,6 @@
 // key, sample index) and skipped ahead to the sample, so every sample can be
 // reproduced on its own.
 //
-// Parameters
-//   sample_count  integer  4  samples per pixel
-//   seed          integer  0  offsets every random number
-//
 //   <sampler type="independent"><integer name="sample_count" value="64"/></sampler>
 
 #include "core/registry/properties.h"
@@ -56,7 +52,7 @@ class IndependentSampler final : public Sampler {
 
 CAUSTICA_REGISTER_PLUGIN(IndependentSampler, "sampler", "independent",
                          {{"sample_count", ParamType::Integer, "4", "samples per pixel"},
-                          {"seed", ParamType::Integer, "0", "random seed"}},
+                          {"seed", ParamType::Integer, "0", "random seed; offsets every random number"}},
                          {});
 
 }  // namespace caustica

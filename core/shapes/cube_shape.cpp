@@ -1,9 +1,5 @@
 // cube: the box [-1, 1]^3 with outward normals, before to_world.
 //
-// Parameters
-//   to_world      transform  identity
-//   flip_normals  boolean    false
-//
 //   <shape type="cube">
 //       <transform name="to_world"><scale x="0.3" y="0.6" z="0.3"/></transform>
 //   </shape>

@@ -1,9 +1,5 @@
 // disk: the unit disk in the z = 0 plane, normal +z, intersected exactly.
 //
-// Parameters
-//   to_world      transform  identity   any affine map (an ellipse under non-uniform scale)
-//   flip_normals  boolean    false
-//
 //   <shape type="disk">
 //       <transform name="to_world"><scale value="0.2"/><translate y="1"/></transform>
 //   </shape>
@@ -99,7 +95,8 @@ class DiskShape final : public AnalyticShape {
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DiskShape, "shape", "disk",
-                         {{"to_world", ParamType::Transform, "", "object-to-world transform"},
+                         {{"to_world", ParamType::Transform, "",
+                           "object-to-world transform, any affine map (an ellipse under non-uniform scale)"},
                           {"flip_normals", ParamType::Boolean, "false", "turn the surface inside out"}},
                          {"bsdf", "emitter"});
 

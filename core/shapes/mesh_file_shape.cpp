@@ -1,12 +1,5 @@
 // obj, ply: triangle meshes read from a file (through Assimp).
 //
-// Parameters
-//   filename          string     (required)  path, relative to the scene file
-//   face_normals      boolean    false       ignore the file's vertex normals
-//   flip_tex_coords   boolean    true (obj)  v -> 1 - v, as Mitsuba does for OBJ
-//   flip_normals      boolean    false
-//   to_world          transform  identity
-//
 // Polygons are triangulated. A mesh without vertex normals is shaded with
 // its face normals.
 //
@@ -63,9 +56,10 @@ MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face
 
 std::vector<ParamSpec> file_params(const char* flip_default) {
   auto params = mesh_shape_params();
-  params.push_back({"filename", ParamType::String, std::nullopt, "mesh file"});
-  params.push_back({"face_normals", ParamType::Boolean, "false", "use face normals"});
-  params.push_back({"flip_tex_coords", ParamType::Boolean, flip_default, "flip the v texture coordinate"});
+  params.push_back({"filename", ParamType::String, std::nullopt, "mesh file, relative to the scene file"});
+  params.push_back(
+      {"face_normals", ParamType::Boolean, "false", "use face normals, ignoring the file's vertex normals"});
+  params.push_back({"flip_tex_coords", ParamType::Boolean, flip_default, "flip v to 1 - v, as Mitsuba does for OBJ"});
   return params;
 }
 

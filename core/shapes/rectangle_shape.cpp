@@ -1,9 +1,5 @@
 // rectangle: the square [-1, 1]^2 in the z = 0 plane, normal +z, before to_world.
 //
-// Parameters
-//   to_world      transform  identity
-//   flip_normals  boolean    false
-//
 //   <shape type="rectangle">
 //       <transform name="to_world"><scale value="0.25"/></transform>
 //   </shape>

@@ -1,11 +1,5 @@
 // sphere: an exact sphere, intersected analytically (not tessellated).
 //
-// Parameters
-//   center        point      0, 0, 0
-//   radius        float      1
-//   to_world      transform  identity   translation, rotation and uniform scale only
-//   flip_normals  boolean    false      normals point inward (emit inward)
-//
 //   <shape type="sphere">
 //       <point name="center" x="0" y="1" z="0"/>
 //       <float name="radius" value="0.25"/>
@@ -141,7 +135,8 @@ CAUSTICA_REGISTER_PLUGIN(SphereShape, "shape", "sphere",
                          {{"center", ParamType::Point, "0, 0, 0", "centre before to_world"},
                           {"radius", ParamType::Float, "1", "radius before to_world"},
                           {"to_world", ParamType::Transform, "", "translation, rotation, uniform scale"},
-                          {"flip_normals", ParamType::Boolean, "false", "normals point inward"}},
+                          {"flip_normals", ParamType::Boolean, "false",
+                           "normals point inward (an emitter emits inward)"}},
                          {"bsdf", "emitter"});
 
 }  // namespace caustica

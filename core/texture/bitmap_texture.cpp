@@ -1,14 +1,6 @@
 // bitmap: a colour image read from a file (PNG, JPEG, EXR, HDR, ... through
 // OpenImageIO), looked up at the surface's (u, v).
 //
-// Parameters
-//   filename     string     (required)  image file, relative to the scene file
-//   filter_type  string     bilinear    "bilinear" or "nearest"
-//   wrap_mode    string     repeat      "repeat", "mirror" or "clamp": what
-//                                       (u, v) outside [0, 1]^2 read
-//   raw          boolean    false       use the stored values as they are
-//   to_uv        transform  none        applied to (u, v, 0) before the lookup
-//
 // Orientation (as Mitsuba 3): u runs left to right and v top to bottom, so
 // (0, 0) is the image's top-left corner. Meshes whose files follow the
 // v-up convention (OBJ) are flipped on load by the shape's flip_tex_coords.
@@ -155,12 +147,13 @@ class BitmapTexture final : public Texture {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(BitmapTexture, "texture", "bitmap",
-                         {{"filename", ParamType::String, std::nullopt, "image file"},
-                          {"filter_type", ParamType::String, "bilinear", "bilinear or nearest"},
-                          {"wrap_mode", ParamType::String, "repeat", "repeat, mirror or clamp"},
-                          {"raw", ParamType::Boolean, "false", "use stored values without sRGB decoding"},
-                          {"to_uv", ParamType::Transform, std::nullopt, "uv transform (optional)"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    BitmapTexture, "texture", "bitmap",
+    {{"filename", ParamType::String, std::nullopt, "image file, relative to the scene file"},
+     {"filter_type", ParamType::String, "bilinear", "bilinear or nearest"},
+     {"wrap_mode", ParamType::String, "repeat", "what (u, v) outside [0, 1]^2 read: repeat, mirror or clamp"},
+     {"raw", ParamType::Boolean, "false", "use stored values without sRGB decoding"},
+     {"to_uv", ParamType::Transform, std::nullopt, "applied to (u, v, 0) before the lookup (optional)"}},
+    {});
 
 }  // namespace caustica

@@ -1,10 +1,5 @@
 // checkerboard: a procedural two-colour check pattern.
 //
-// Parameters
-//   color0  texture    0.4   colour of the checks containing (0, 0) and (0.5, 0.5)
-//   color1  texture    0.2   colour of the other two checks
-//   to_uv   transform  none  applied to (u, v, 0) before the lookup
-//
 // The unit square holds 2 x 2 checks and the pattern repeats outside it. As
 // in Mitsuba 3, a point is in color0 when frac(u) > 0.5 and frac(v) > 0.5
 // agree (both true or both false), i.e. floor(2u) + floor(2v) is even away
@@ -58,10 +53,11 @@ class CheckerboardTexture final : public Texture {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(CheckerboardTexture, "texture", "checkerboard",
-                         {{"color0", ParamType::Texture, "0.4", "colour of the checks at (0, 0) and (0.5, 0.5)"},
-                          {"color1", ParamType::Texture, "0.2", "colour of the other checks"},
-                          {"to_uv", ParamType::Transform, std::nullopt, "uv transform (optional)"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    CheckerboardTexture, "texture", "checkerboard",
+    {{"color0", ParamType::Texture, "0.4", "colour of the checks containing (0, 0) and (0.5, 0.5)"},
+     {"color1", ParamType::Texture, "0.2", "colour of the other two checks"},
+     {"to_uv", ParamType::Transform, std::nullopt, "applied to (u, v, 0) before the lookup (optional)"}},
+    {});
 
 }  // namespace caustica

@@ -8,15 +8,13 @@
 // could have made it, so the estimate stays unbiased while each kind of
 // light goes to the strategy that finds it best.
 //
-// Parameters (path length as in core/render/path_settings.h)
-//   max_depth         integer  -1       longest path in segments
-//   rr_depth          integer  5        subpath vertices before Russian roulette
-//   rr_max_survival   float    0.95     upper bound on the survival probability
-//   hide_emitters     boolean  false    emitters seen directly appear black
-//   mis               string   power    heuristic: power (exponent 2) or balance
-//   strategy_layers   integer  0        for paths of up to this many segments, also
-//                                       write each strategy's weighted contribution
-//                                       as the layer sS tT.{R,G,B}; they sum to the beauty
+// max_depth counts the segments of the whole path; rr_depth counts the
+// vertices of each subpath before Russian roulette may end it. `mis` picks
+// the heuristic: power (exponent 2) or balance. With strategy_layers = n
+// (at most 12) the output also holds, for every path length k = 1 .. n
+// segments and each of its k + 1 strategies (s, t) with s + t - 1 = k, the
+// strategy's weighted contribution as the layer sStT (channels such as
+// s1t2.R, s1t2.G, s1t2.B); a length's layers sum to its share of the beauty.
 //
 //   <integrator type="bdpt"><integer name="strategy_layers" value="4"/></integrator>
 
@@ -111,11 +109,6 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
            (scene.features().caustic_paths ? "; caustics mostly by light tracing (t = 1)" : "");
   }
 
-  std::string describe() const override {
-    return caustica::describe("bdpt", settings_) + (heuristic_ == MisHeuristic::Power ? " mis=power" : " mis=balance") +
-           " strategy_layers=" + std::to_string(layers_);
-  }
-
  private:
   static void add(std::span<float> out, uint32_t channel, Color c) {
     out[channel] += c.r;
@@ -194,10 +187,11 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(BidirectionalPathTracer, "integrator", "bdpt",
-                         path_settings_params({{"mis", ParamType::String, "power", "power or balance heuristic"},
-                                               {"strategy_layers", ParamType::Integer, "0",
-                                                "write each strategy's contribution for paths up to this length"}}),
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    BidirectionalPathTracer, "integrator", "bdpt",
+    path_settings_params({{"mis", ParamType::String, "power", "MIS heuristic: power (exponent 2) or balance"},
+                          {"strategy_layers", ParamType::Integer, "0",
+                           "also write each strategy's contribution for paths of up to this many segments (0 to 12)"}}),
+    {});
 
 }  // namespace caustica

@@ -6,11 +6,9 @@
 // smooth glass between the camera and the first diffuse or glossy surface):
 // such paths cannot be joined to a pinhole.
 //
-// Parameters (core/render/path_settings.h)
-//   max_depth         integer  -1     longest path in segments, counted from the camera
-//   rr_depth          integer  5      vertices after the emitter before Russian roulette
-//   rr_max_survival   float    0.95   upper bound on the survival probability
-//   hide_emitters     boolean  false  emitters seen directly appear black
+// max_depth counts a path's segments from the camera, as for path; rr_depth
+// counts the light path's vertices after the emitter before Russian roulette
+// may end it.
 //
 //   <integrator type="ptracer"><integer name="max_depth" value="8"/></integrator>
 
@@ -40,8 +38,6 @@ class ParticleTracer final : public LightPathIntegrator {
       if (const auto c = connect_to_camera(scene, light, s, sampler)) splats.add(c->raster, c->value);
     return 1;
   }
-
-  std::string describe() const override { return caustica::describe("ptracer", settings_); }
 
   std::string plan(const Scene& scene) const override {
     return std::string("ptracer: light paths joined to the camera") +

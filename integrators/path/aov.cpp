@@ -1,16 +1,15 @@
 // aov: arbitrary output variables at the first surface the camera sees,
 // noise-free inputs for denoisers and compositing.
 //
-// Parameters
-//   aovs  string  "albedo:albedo,nn:sh_normal,dd:depth"
-//         comma-separated name:kind pairs; kinds are
-//           albedo     the BSDF's reflectance (3 channels: name.R/G/B)
-//           sh_normal  shading normal, world space (name.X/Y/Z)
-//           geo_normal geometric normal, world space (name.X/Y/Z)
-//           position   hit point, world space (name.X/Y/Z)
-//           uv         surface coordinates (name.U/V)
-//           depth      distance from the camera along the ray (name.T)
-//         Rays that miss write zeros.
+// `aovs` lists comma-separated name:kind pairs; each pair writes the layer
+// `name` with the kind's channels:
+//   albedo      the BSDF's albedo (reflectance) seen from the ray: name.R, name.G, name.B
+//   sh_normal   shading normal, world space: name.X, name.Y, name.Z
+//   geo_normal  geometric normal, world space: name.X, name.Y, name.Z
+//   position    hit point, world space: name.X, name.Y, name.Z
+//   uv          surface coordinates: name.U, name.V
+//   depth       distance from the camera along the ray: name.T
+// Rays that miss write zeros.
 //
 //   <integrator type="aov"><string name="aovs" value="a:albedo,n:sh_normal"/></integrator>
 
@@ -51,8 +50,6 @@ class AovIntegrator final : public PixelIntegrator {
     return std::make_unique<AovEstimator>(evaluator_, scene);
   }
 
-  std::string describe() const override { return "aov aovs=" + text_; }
-
  private:
   AovEvaluator evaluator_;
   std::string text_;
@@ -60,7 +57,10 @@ class AovIntegrator final : public PixelIntegrator {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(AovIntegrator, "integrator", "aov",
-                         {{"aovs", ParamType::String, "albedo:albedo,nn:sh_normal,dd:depth", "name:kind list"}}, {});
+CAUSTICA_REGISTER_PLUGIN(
+    AovIntegrator, "integrator", "aov",
+    {{"aovs", ParamType::String, "albedo:albedo,nn:sh_normal,dd:depth",
+      "comma-separated name:kind pairs; kinds albedo, sh_normal, geo_normal, position, uv, depth"}},
+    {});
 
 }  // namespace caustica

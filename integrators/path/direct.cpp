@@ -2,12 +2,6 @@
 // Emitter samples and BSDF samples are combined by multiple importance
 // sampling (power heuristic, accounting for the number of each).
 //
-// Parameters
-//   shading_samples  integer  1      default for both counts below
-//   emitter_samples  integer  shading_samples  next-event samples per camera ray
-//   bsdf_samples     integer  shading_samples  BSDF samples per camera ray
-//   hide_emitters    boolean  false  emitters seen directly appear black
-//
 //   <integrator type="direct"><integer name="emitter_samples" value="4"/></integrator>
 
 #include "core/bsdf/surface_bsdf.h"
@@ -22,7 +16,7 @@ namespace caustica {
 namespace {
 
 int64_t count(const Properties& props, const char* name) {
-  const int64_t n = props.has(name) ? props.get_int(name) : props.get_int("shading_samples");
+  const int64_t n = props.get_int_or(name, props.get_int("shading_samples"));
   if (n < 0) throw props.error(name, "must not be negative");
   return n;
 }
@@ -60,11 +54,6 @@ class DirectIntegrator final : public RadianceIntegrator {
     DirectLight direct(scene, sampler, *this);
     random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct);
     return direct.L;
-  }
-
-  std::string describe() const override {
-    return "direct emitter_samples=" + std::to_string(emitter_samples_) +
-           " bsdf_samples=" + std::to_string(bsdf_samples_) + " hide_emitters=" + (hide_emitters_ ? "true" : "false");
   }
 
  private:
@@ -111,11 +100,12 @@ void DirectLight::escaped(const WalkEscape& e) {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(DirectIntegrator, "integrator", "direct",
-                         {{"shading_samples", ParamType::Integer, "1", "default sample count"},
-                          {"emitter_samples", ParamType::Integer, "1", "emitter samples per ray"},
-                          {"bsdf_samples", ParamType::Integer, "1", "BSDF samples per ray"},
-                          {"hide_emitters", ParamType::Boolean, "false", "hide directly visible emitters"}},
-                         {});
+CAUSTICA_REGISTER_PLUGIN(
+    DirectIntegrator, "integrator", "direct",
+    {{"emitter_samples", ParamType::Integer, "1", "emitter samples per ray (if not given: shading_samples)"},
+     {"bsdf_samples", ParamType::Integer, "1", "BSDF samples per ray (if not given: shading_samples)"},
+     {"shading_samples", ParamType::Integer, "1", "default for both sample counts"},
+     {"hide_emitters", ParamType::Boolean, "false", "hide directly visible emitters"}},
+    {});
 
 }  // namespace caustica

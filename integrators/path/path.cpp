@@ -2,14 +2,6 @@
 // samples an emitter and the BSDF, and both strategies are combined by
 // multiple importance sampling (power heuristic).
 //
-// Parameters (core/render/path_settings.h)
-//   max_depth         integer  -1     longest path in segments from the camera; -1 for no
-//                                      limit, 0 renders black, 1 shows emitters only, 2 direct
-//                                      light only
-//   rr_depth          integer  5      depth from which Russian roulette may end paths
-//   rr_max_survival   float    0.95   upper bound on the survival probability
-//   hide_emitters     boolean  false  emitters seen directly by the camera appear black
-//
 // Russian roulette policy: from rr_depth on, a path survives with probability
 // q = min(max_component(throughput) * eta_scale, rr_max_survival), and the
 // survivors' throughput is divided by q, which keeps the estimator unbiased.
@@ -34,8 +26,6 @@ class PathIntegrator final : public RadianceIntegrator {
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
     return trace_path(scene, ray, sampler, settings_);
   }
-
-  std::string describe() const override { return caustica::describe("path", settings_); }
 
   std::string plan(const Scene& scene) const override {
     const SceneFeatures& f = scene.features();

@@ -9,15 +9,9 @@
 // scene cannot have caustic paths (SceneFeatures) no photon is traced and
 // the integrator costs what path costs.
 //
-// Parameters (path length as in core/render/path_settings.h)
-//   max_depth          integer  -1      longest path in segments, photon paths included
-//   rr_depth           integer  5       vertices before Russian roulette (camera and photon paths)
-//   rr_max_survival    float    0.95    upper bound on the survival probability
-//   hide_emitters      boolean  false   emitters seen directly appear black
-//   photons            integer  100000  photons traced per round
-//   radius             float    0       initial gather radius; 0 for 1/200 of the scene's bounding-box diagonal
-//   alpha              float    0.7     fraction of new photons kept per round, in (0, 1)
-//   samples_per_round  integer  1       samples per pixel between photon rounds
+// max_depth limits the whole path, a photon's segments included; rr_depth
+// counts the vertices before Russian roulette on camera and photon paths
+// alike.
 //
 //   <integrator type="photon"><integer name="photons" value="200000"/></integrator>
 
@@ -32,6 +26,7 @@
 #include "core/scene/scene.h"
 #include "integrators/path/path_tracing.h"
 #include "integrators/photon/photon_density.h"
+#include "integrators/photon/photon_settings.h"
 #include "integrators/photon/photon_tracing.h"
 
 namespace caustica {
@@ -87,13 +82,8 @@ class PhotonIntegrator final : public PixelIntegrator {
  public:
   explicit PhotonIntegrator(const Properties& props)
       : settings_(read_path_settings(props)),
-        photons_(props.get_int("photons")),
-        radius_(props.get_float("radius")),
-        alpha_(props.get_float("alpha")),
+        photon_(read_photon_settings(props)),
         samples_per_round_(props.get_int("samples_per_round")) {
-    if (photons_ < 1) throw props.error("photons", "must be at least 1");
-    if (!(radius_ >= 0)) throw props.error("radius", "must not be negative");
-    if (!(alpha_ > 0 && alpha_ < 1)) throw props.error("alpha", "must be in (0, 1)");
     if (samples_per_round_ < 1 || samples_per_round_ > 1024)
       throw props.error("samples_per_round", "must be between 1 and 1024");
   }
@@ -106,14 +96,8 @@ class PhotonIntegrator final : public PixelIntegrator {
     if (!scene.features().caustic_paths)
       return std::string("photon: caustic photon pass skipped (") + scene.features().caustics_reason +
              "); path tracing alone, at path's cost";
-    return std::string("photon: ") + std::to_string(photons_) + " caustic photons per round (" +
+    return std::string("photon: ") + std::to_string(photon_.photons) + " caustic photons per round (" +
            scene.features().caustics_reason + "), path tracing for the rest";
-  }
-
-  std::string describe() const override {
-    return caustica::describe("photon", settings_) + " photons=" + std::to_string(photons_) +
-           " radius=" + std::to_string(radius_) + " alpha=" + std::to_string(alpha_) +
-           " samples_per_round=" + std::to_string(samples_per_round_);
   }
 
  private:
@@ -122,20 +106,18 @@ class PhotonIntegrator final : public PixelIntegrator {
   // r_i^2 = r_0^2 prod_{k=1}^{i} (k + alpha) / (k + 1)  (Knaus and Zwicker 2011, eq. 20)
   float round_radius(float initial_radius, uint32_t round) const {
     double r2 = double(initial_radius) * initial_radius;
-    for (uint32_t k = 1; k <= round; ++k) r2 *= (k + alpha_) / (k + 1.0);
+    for (uint32_t k = 1; k <= round; ++k) r2 *= (k + photon_.alpha) / (k + 1.0);
     return float(std::sqrt(r2));
   }
 
   PathSettings settings_;
-  int64_t photons_;
-  float radius_, alpha_;
+  PhotonSettings photon_;
   int64_t samples_per_round_;
 };
 
 CausticRounds::CausticRounds(const PhotonIntegrator& settings, const Scene& scene, uint64_t seed)
     : settings_(settings), scene_(scene), seed_(seed), enabled_(scene.features().caustic_paths) {
-  const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
-  initial_radius_ = settings.radius_ > 0 ? settings.radius_ : std::max(length(diagonal) / 200, 1e-6f);
+  initial_radius_ = initial_radius(scene, settings.photon_);
 }
 
 uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(settings_.samples_per_round_) : 16; }
@@ -146,7 +128,7 @@ void CausticRounds::begin_pass(uint32_t pass) {
   if (!enabled_ || round_ == pass) return;
   round_ = pass;
   ++rounds_;
-  const uint64_t photons = uint64_t(settings_.photons_);
+  const uint64_t photons = uint64_t(settings_.photon_.photons);
   map_ = PhotonMap(trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_),
                    settings_.round_radius(initial_radius_, pass));
   gather_.emplace(map_, photons, settings_.settings_.max_depth);
@@ -163,10 +145,11 @@ void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> ou
 
 CAUSTICA_REGISTER_PLUGIN(
     PhotonIntegrator, "integrator", "photon",
-    path_settings_params({{"photons", ParamType::Integer, "100000", "photons traced per round"},
-                          {"radius", ParamType::Float, "0", "initial gather radius, 0 to derive it from the scene"},
-                          {"alpha", ParamType::Float, "0.7", "radius reduction parameter in (0, 1)"},
-                          {"samples_per_round", ParamType::Integer, "1", "samples per pixel per photon round"}}),
+    path_settings_params(
+        {{"photons", ParamType::Integer, "100000", "photons traced per round"},
+         {"radius", ParamType::Float, "0", "initial gather radius; 0 for 1/200 of the scene's bounding-box diagonal"},
+         {"alpha", ParamType::Float, "0.7", "fraction of new photons kept per round (radius reduction), in (0, 1)"},
+         {"samples_per_round", ParamType::Integer, "1", "samples per pixel per photon round"}}),
     {});
 
 }  // namespace caustica

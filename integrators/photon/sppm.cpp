@@ -14,14 +14,8 @@
 // Photon rounds and the camera pass run in parallel and are deterministic
 // for a seed.
 //
-// Parameters (path length as in core/render/path_settings.h)
-//   max_depth         integer  -1      longest path in segments, photon paths included
-//   rr_depth          integer  5       photon vertices before Russian roulette
-//   rr_max_survival   float    0.95    upper bound on the survival probability
-//   hide_emitters     boolean  false   emitters seen directly appear black
-//   photons           integer  100000  photons traced per iteration
-//   radius            float    0       initial radius; 0 for 1/200 of the scene's bounding-box diagonal
-//   alpha             float    0.7     fraction of new photons kept per iteration, in (0, 1)
+// max_depth limits the whole path, a photon's segments included; rr_depth
+// counts a photon path's vertices before Russian roulette may end it.
 //
 //   <integrator type="sppm"><integer name="photons" value="200000"/></integrator>
 
@@ -41,6 +35,7 @@
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 #include "integrators/photon/photon_density.h"
+#include "integrators/photon/photon_settings.h"
 #include "integrators/photon/photon_tracing.h"
 
 namespace caustica {
@@ -119,50 +114,36 @@ class SppmPixels final : public IterationState {
 class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
  public:
   explicit StochasticProgressivePhotonMapping(const Properties& props)
-      : settings_(read_path_settings(props)),
-        photons_(props.get_int("photons")),
-        radius_(props.get_float("radius")),
-        alpha_(props.get_float("alpha")) {
-    if (photons_ < 1) throw props.error("photons", "must be at least 1");
-    if (!(radius_ >= 0)) throw props.error("radius", "must not be negative");
-    if (!(alpha_ > 0 && alpha_ < 1)) throw props.error("alpha", "must be in (0, 1)");
-  }
+      : settings_(read_path_settings(props)), photon_(read_photon_settings(props)) {}
 
   std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
     return std::make_unique<SppmPixels>(*this, scene, seed);
   }
 
   std::string plan(const Scene&) const override {
-    return std::string("sppm: ") + std::to_string(photons_) +
+    return std::string("sppm: ") + std::to_string(photon_.photons) +
            " photons per iteration carry all indirect light; emission and next-event estimation at each "
            "pixel's visible point";
-  }
-
-  std::string describe() const override {
-    return caustica::describe("sppm", settings_) + " photons=" + std::to_string(photons_) +
-           " radius=" + std::to_string(radius_) + " alpha=" + std::to_string(alpha_);
   }
 
  private:
   friend class SppmPixels;
   PathSettings settings_;
-  int64_t photons_;
-  float radius_, alpha_;
+  PhotonSettings photon_;
 };
 
 SppmPixels::SppmPixels(const StochasticProgressivePhotonMapping& settings, const Scene& scene, uint64_t seed)
     : settings_(settings), scene_(scene), seed_(seed), width_(scene.sensor().film()->width()) {
-  const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
-  const float r0 = settings.radius_ > 0 ? settings.radius_ : std::max(length(diagonal) / 200, 1e-6f);
+  const float r0 = initial_radius(scene, settings.photon_);
   pixels_.assign(size_t(width_) * scene.sensor().film()->height(), PixelState{{}, {}, 0, r0});
 }
 
 void SppmPixels::iterate(uint64_t iteration) {
   float max_radius = 0;
   for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
-  const PhotonMap map(
-      trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photons_), iteration, seed_, settings_.settings_),
-      max_radius);
+  const PhotonMap map(trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration,
+                                    seed_, settings_.settings_),
+                      max_radius);
   const int height = int(pixels_.size() / size_t(width_));
   tbb::parallel_for(0, height, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();
@@ -174,7 +155,7 @@ void SppmPixels::iterate(uint64_t iteration) {
 // D / n + tau / (n photons pi R^2).
 Color SppmPixels::estimate(Vec2i pixel) const {
   const PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
-  const double emitted = double(iterations_) * double(settings_.photons_);
+  const double emitted = double(iterations_) * double(settings_.photon_.photons);
   return px.direct / float(iterations_) + px.tau / float(emitted * kPi * double(px.radius) * double(px.radius));
 }
 
@@ -185,7 +166,7 @@ void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pix
   random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,
               visible);
   if (visible.photons > 0) {
-    const double n_new = px.n + settings_.alpha_ * visible.photons;
+    const double n_new = px.n + settings_.photon_.alpha * visible.photons;
     const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2
     px.tau = (px.tau + visible.flux) * float(shrink2);
     px.radius = float(px.radius * std::sqrt(shrink2));
@@ -198,8 +179,9 @@ void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pix
 CAUSTICA_REGISTER_PLUGIN(
     StochasticProgressivePhotonMapping, "integrator", "sppm",
     path_settings_params({{"photons", ParamType::Integer, "100000", "photons traced per iteration"},
-                          {"radius", ParamType::Float, "0", "initial radius, 0 to derive it from the scene"},
-                          {"alpha", ParamType::Float, "0.7", "fraction of new photons kept, in (0, 1)"}}),
+                          {"radius", ParamType::Float, "0",
+                           "initial radius; 0 for 1/200 of the scene's bounding-box diagonal"},
+                          {"alpha", ParamType::Float, "0.7", "fraction of new photons kept per iteration, in (0, 1)"}}),
     {});
 
 }  // namespace caustica

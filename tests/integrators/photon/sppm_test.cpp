@@ -12,7 +12,7 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/loader/scene_loader.h"
-#include "core/registry/registry.h"
+#include "core/registry/properties.h"
 #include "core/sampling/warp.h"
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"

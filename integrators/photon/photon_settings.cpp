@@ -1,0 +1,23 @@
+#include "integrators/photon/photon_settings.h"
+
+#include <algorithm>
+
+#include "core/registry/properties.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+PhotonSettings read_photon_settings(const Properties& props) {
+  PhotonSettings s{props.get_int("photons"), props.get_float("radius"), props.get_float("alpha")};
+  if (s.photons < 1) throw props.error("photons", "must be at least 1");
+  if (!(s.radius >= 0)) throw props.error("radius", "must not be negative");
+  if (!(s.alpha > 0 && s.alpha < 1)) throw props.error("alpha", "must be in (0, 1)");
+  return s;
+}
+
+float initial_radius(const Scene& scene, const PhotonSettings& settings) {
+  const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
+  return settings.radius > 0 ? settings.radius : std::max(length(diagonal) / 200, 1e-6f);
+}
+
+}  // namespace caustica

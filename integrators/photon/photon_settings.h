@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstdint>
+
+namespace caustica {
+
+class Properties;
+class Scene;
+
+// The parameters photon and sppm share, read and checked in one place.
+struct PhotonSettings {
+  int64_t photons = 100000;  // traced per round (iteration)
+  float radius = 0;          // initial gather radius; 0 derives it from the scene
+  float alpha = 0.7f;        // fraction of new photons kept per round, in (0, 1)
+};
+
+PhotonSettings read_photon_settings(const Properties& props);
+
+// The first round's radius: the one given, else 1/200 of the scene's
+// bounding-box diagonal.
+float initial_radius(const Scene& scene, const PhotonSettings& settings);
+
+}  // namespace caustica
