@@ -1,6 +1,7 @@
 #include "core/job/range_merge.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -49,6 +50,38 @@ void add_part(const RenderFile& part, const std::string& prefix, uint64_t splat_
   film.add_raw(sums, n, 0, splats ? splat_paths : 0);
 }
 
+struct SampleRange {
+  uint64_t first, last;  // inclusive
+};
+
+// The sample indices a render holds: its caustica:ranges if it is a merge,
+// else first_sample .. first_sample + spp - 1.
+std::vector<SampleRange> sample_ranges(const RenderFile& part) {
+  std::vector<SampleRange> out;
+  const std::string list = metadata_value(part, "caustica:ranges");
+  const auto count = [&](const char* key) {
+    const double x = metadata_number(part, key);
+    if (!(x >= 0 && x < 9.2e18 && x == std::floor(x)))
+      throw part_error(part, std::string("has no sample count in its ") + key + " metadata");
+    return uint64_t(x);
+  };
+  if (list.empty()) {
+    const uint64_t first = count("caustica:first_sample"), spp = count("caustica:spp");
+    if (spp > 0) out.push_back({first, first + spp - 1});
+    return out;
+  }
+  std::istringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) {
+    uint64_t first = 0, last = 0;
+    char dash = 0;
+    std::istringstream range(item);
+    if (!(range >> first >> dash >> last) || dash != '-' || last < first)
+      throw part_error(part, "has a malformed caustica:ranges entry '" + item + "'");
+    out.push_back({first, last});
+  }
+  return out;
+}
+
 }  // namespace
 
 bool has_raw_sums(const RenderFile& render) {
@@ -75,9 +108,9 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
   if (input.empty()) throw std::invalid_argument("nothing to merge");
   std::vector<const RenderFile*> parts;
   for (const RenderFile& part : input) parts.push_back(&part);
-  const auto first_sample = [](const RenderFile* part) { return metadata_number(*part, "caustica:first_sample"); };
-  std::stable_sort(parts.begin(), parts.end(),
-                   [&](const RenderFile* a, const RenderFile* b) { return first_sample(a) < first_sample(b); });
+  std::stable_sort(parts.begin(), parts.end(), [](const RenderFile* a, const RenderFile* b) {
+    return metadata_number(*a, "caustica:first_sample") < metadata_number(*b, "caustica:first_sample");
+  });
   const RenderFile& first = *parts.front();
   for (const RenderFile* part : parts) {
     if (!has_raw_sums(*part)) throw part_error(*part, "holds no raw sums (render it with --raw-sums)");
@@ -86,17 +119,33 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
       throw part_error(
           *part, "has another seed than '" + first.path + "': sample ranges merge only within one seed's samples");
   }
+  // Every interval of every part, the part's own included, must be disjoint.
+  std::vector<std::pair<SampleRange, const RenderFile*>> intervals;
+  for (const RenderFile* part : parts)
+    for (const SampleRange& r : sample_ranges(*part)) intervals.emplace_back(r, part);
+  std::sort(intervals.begin(), intervals.end(),
+            [](const auto& a, const auto& b) { return a.first.first < b.first.first; });
+  for (size_t i = 1; i < intervals.size(); ++i) {
+    const auto& [r, part] = intervals[i];
+    const auto& [before, other] = intervals[i - 1];
+    if (r.first <= before.last)
+      throw part_error(*part, "overlaps the sample range of '" + other->path + "' (samples " + std::to_string(r.first) +
+                                  " to " + std::to_string(r.last) + " against " + std::to_string(before.first) +
+                                  " to " + std::to_string(before.last) + ")");
+  }
+  std::vector<SampleRange> joined;
+  uint64_t spp = 0;
+  for (const auto& [r, part] : intervals) {
+    spp += r.last - r.first + 1;
+    if (!joined.empty() && joined.back().last + 1 == r.first)
+      joined.back().last = r.last;
+    else
+      joined.push_back(r);
+  }
   std::string ranges;
-  double next_free = 0, spp = 0;
-  for (const RenderFile* part : parts) {
-    const double begin = first_sample(part), count = metadata_number(*part, "caustica:spp");
-    if (part != parts.front() && begin < next_free)
-      throw part_error(*part, "overlaps the sample range of another part (samples " + std::to_string(uint64_t(begin)) +
-                                  " to " + std::to_string(uint64_t(begin + count) - 1) + ")");
-    next_free = begin + count;
-    spp += count;
-    ranges += (ranges.empty() ? "" : ",") + std::to_string(uint64_t(begin)) + "-" +
-              std::to_string(uint64_t(begin + count) - 1);
+  for (const SampleRange& r : joined) {
+    if (!ranges.empty()) ranges.append(",");
+    ranges.append(std::to_string(r.first)).append("-").append(std::to_string(r.last));
   }
 
   const Image& shape = first.image;
@@ -113,8 +162,10 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
   const bool variance_known = shape.channel_index("variance.R") >= 0;
   RenderFile merged{"", render_layers(film, aovs ? &*aovs : nullptr, variance_known, true), first.metadata};
   merged.metadata["caustica:ranges"] = ranges;
-  merged.metadata["caustica:first_sample"] = metadata_value(first, "caustica:first_sample");
-  merged.metadata["caustica:spp"] = std::to_string(uint64_t(spp));
+  merged.metadata["caustica:first_sample"] = std::to_string(joined.front().first);
+  merged.metadata["caustica:spp"] = std::to_string(spp);
+  // What one part's integrator reported of its run says nothing of the others'.
+  merged.metadata.erase("caustica:run");
   for (const char* key : {"caustica:samples", "caustica:rays"}) {
     double total = 0;
     for (const RenderFile* part : parts) total += metadata_number(*part, key);

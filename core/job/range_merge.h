@@ -16,8 +16,9 @@ RenderFile without_raw_sums(RenderFile render);
 // sample indices (render --first-sample N --spp COUNT --raw-sums) into the
 // render of their union: the raw sums are added and resolved as the film
 // resolves them, so the image is that of one render of all the samples, up
-// to the order in which double sums were added (bit for bit in practice).
-// The metadata lists the ranges in caustica:ranges. Throws
+// to the order in which the double sums were added (the very same float
+// image in the tests). The metadata lists the ranges in caustica:ranges
+// (adjacent ones joined), so merges merge again. Throws
 // std::invalid_argument naming the file when a part lacks raw sums,
 // differs in size, channels, scene, integrator or seed, or overlaps another
 // part's range.

@@ -13,7 +13,7 @@ class Plugin {
 
   // The plugin's name and the effective value of each scalar parameter it
   // declares, in declaration order, as the registry recorded them when it
-  // made the plugin (core/registry/effective_parameters.h).
+  // made the plugin (Properties::effective_parameters()).
   const std::string& plugin_name() const { return name_; }
   const std::vector<std::pair<std::string, std::string>>& parameters() const { return parameters_; }
   void set_parameters(std::string name, std::vector<std::pair<std::string, std::string>> parameters) {

@@ -24,6 +24,13 @@ class IterativeRun final : public IntegratorRun {
   bool variance_known() const override { return false; }
 
   void run_pass(PassRange range, const PassTarget& target) override {
+    // Statistics kept across iterations make iteration N of a render that
+    // starts at N another estimate than iteration N of one that starts at 0.
+    if (range.first != iterations_)
+      throw std::invalid_argument(
+          "an iterative integrator keeps each pixel's statistics across iterations: it renders from iteration 0 "
+          "on, not from --first-sample " +
+          std::to_string(range.first));
     const Film& film = *scene_.sensor().film();
     for (uint64_t i = range.first; i < range.first + range.count; ++i) {
       state_->iterate(i);

@@ -11,9 +11,10 @@ namespace caustica {
 
 // The light-path family (ptracer, bdpt): a sample belongs to a pixel and an
 // index but may light any pixel, through splats where its light paths join
-// the camera. The integrator starts its own sample streams from the pixel
-// and index it receives (a camera subpath from the pixel's camera stream,
-// a light path from its light-path stream). The loop renders the tiles in
+// the camera. The integrator starts its own sample stream from the pixel
+// and index it receives (bdpt its pixel's camera stream, in which its light
+// subpath follows the camera subpath; ptracer its pixel's light-path
+// stream). The loop renders the tiles in
 // chunks; each tile collects its splats in its own list, and the lists
 // enter the film in tile order, in parallel over bands of rows, so every
 // pixel receives its splats in the same order for any thread count.

@@ -38,7 +38,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
       break;
     const uint32_t count = uint32_t(timed ? available : std::min<uint64_t>(available, target - done));
     const double pass_start = elapsed();
-    arena.execute([&] { run->run_pass({pass.number, uint32_t(next), count}, out); });
+    arena.execute([&] { run->run_pass({pass.number, next, count}, out); });
     done += count;
     last_pass = elapsed() - pass_start;
     last_count = count;

@@ -31,15 +31,14 @@ namespace caustica {
 // How a ray left its previous vertex, which is what weighs emission it
 // meets against next-event estimation from that vertex.
 struct Arrival {
-  bool from_origin = true;  // the walk's first ray (camera or emitter): no vertex to weigh against
-  bool delta = true;        // left the previous vertex through a delta lobe (true for the first ray)
-  float pdf = 0;            // the solid-angle density of that BSDF sample
-  ReferencePoint from;      // the previous vertex
+  bool delta = true;    // left the previous vertex through a delta lobe (true for the first ray)
+  float pdf = 0;        // the solid-angle density of that BSDF sample
+  ReferencePoint from;  // the previous vertex
 };
 
 // How a ray sampled by `bs` leaves `si`.
 inline Arrival arrival_from(const SurfaceInteraction& si, const BsdfSample& bs) {
-  return {false, bs.is_delta(), bs.pdf, {si.p, si.p_error, si.ng}};
+  return {bs.is_delta(), bs.pdf, {si.p, si.p_error, si.ng}};
 }
 
 struct WalkVertex {

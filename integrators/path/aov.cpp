@@ -42,7 +42,7 @@ class AovEstimator final : public PixelEstimator {
 
 class AovIntegrator final : public PixelIntegrator {
  public:
-  explicit AovIntegrator(const Properties& props) : evaluator_(read_aovs(props)), text_(props.get_string("aovs")) {}
+  explicit AovIntegrator(const Properties& props) : evaluator_(read_aovs(props)) {}
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
 
@@ -52,7 +52,6 @@ class AovIntegrator final : public PixelIntegrator {
 
  private:
   AovEvaluator evaluator_;
-  std::string text_;
 };
 
 }  // namespace

@@ -126,7 +126,7 @@ TEST_F(MergeAndCompare, RangesOfOneSeedMergeIntoTheRenderOfTheirUnion) {
       ASSERT_EQ(a.pixels[i], b.pixels[i]) << a.channels[c] << " of pixel " << i / a.channels.size();
   }
   EXPECT_EQ(compared, 14u);  // R, G, B, albedo.*, normal.*, depth.T, variance.*, samples.Y
-  EXPECT_EQ(merged_meta["caustica:ranges"], "0-2,3-6");
+  EXPECT_EQ(merged_meta["caustica:ranges"], "0-6");
   EXPECT_EQ(merged_meta["caustica:spp"], "7");
   EXPECT_EQ(whole_meta["caustica:first_sample"], "0");
 }
