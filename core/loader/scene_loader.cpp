@@ -47,6 +47,15 @@ class Instantiator {
   explicit Instantiator(const XmlNode& root) { collect_ids(root, true); }
 
   ObjectValue build(const XmlNode& node) {
+    // Nested objects and chains of references both recurse through here.
+    if (depth_ >= kMaxSceneDepth)
+      throw SceneError(node.where, "objects nested or referring to each other more than " +
+                                       std::to_string(kMaxSceneDepth) + " deep");
+    ++depth_;
+    struct Leave {
+      int& depth;
+      ~Leave() { --depth; }
+    } leave{depth_};
     if (const std::string* id = node.attribute("id")) {
       if (auto it = built_.find(*id); it != built_.end()) return it->second;
       if (!building_.insert(*id).second) throw SceneError(node.where, "'" + *id + "' refers to itself");
@@ -146,6 +155,7 @@ class Instantiator {
     }
   }
 
+  int depth_ = 0;
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
   std::set<std::string> building_;

@@ -139,7 +139,7 @@ class Reader {
       if (!major) throw SceneError(ctx.at(root), "invalid version '" + text_version + "' (expected MAJOR.MINOR.PATCH)");
       ctx.upgrade = *major < 2;
     }
-    XmlNode node = convert(root, ctx, /*is_root=*/true);
+    XmlNode node = convert(root, ctx, 0);
     if (!file.empty()) open_files_.pop_back();
     return node;
   }
@@ -180,7 +180,13 @@ class Reader {
     return out;
   }
 
-  XmlNode convert(const pugi::xml_node& element, const FileContext& ctx, bool is_root) {
+  // `depth` counts the elements above this one; bounded, so that a hostile
+  // file cannot exhaust the stack.
+  XmlNode convert(const pugi::xml_node& element, const FileContext& ctx, int depth) {
+    const bool is_root = depth == 0;
+    if (depth > kMaxSceneDepth)
+      throw SceneError(ctx.at(element), "<" + std::string(element.name()) + "> is nested more than " +
+                                            std::to_string(kMaxSceneDepth) + " elements deep");
     XmlNode node{element.name(), {}, {}, ctx.at(element)};
     for (pugi::xml_attribute attribute : element.attributes())
       node.attributes.emplace_back(attribute.name(), substitute(attribute.value(), node.where));
@@ -195,7 +201,7 @@ class Reader {
       } else if (tag == "include") {
         splice_include(child, ctx, node.children);
       } else {
-        node.children.push_back(convert(child, ctx, /*is_root=*/false));
+        node.children.push_back(convert(child, ctx, depth + 1));
       }
     }
     if (was_ldrfilm) drop_ldrfilm_display_settings(node);

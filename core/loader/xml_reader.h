@@ -9,6 +9,10 @@
 
 namespace caustica {
 
+// How deep elements may nest, and objects refer to objects (<ref>), in a
+// scene: far beyond any real scene, well within the stack.
+inline constexpr int kMaxSceneDepth = 64;
+
 // Reads `file`, returns its root <scene> node after: includes spliced, defaults
 // and $name references resolved (with `defines` from -D taking precedence over
 // <default>), and files written for Mitsuba 0.x upgraded. Throws SceneError.

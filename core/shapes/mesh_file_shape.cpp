@@ -44,7 +44,14 @@ MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face
     }
     for (unsigned f = 0; f < in->mNumFaces; ++f) {
       if (in->mFaces[f].mNumIndices != 3) continue;
-      for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + in->mFaces[f].mIndices[k]);
+      for (int k = 0; k < 3; ++k) {
+        const unsigned index = in->mFaces[f].mIndices[k];
+        if (index >= in->mNumVertices)
+          throw props.error("filename", "mesh file '" + file.string() + "': face " + std::to_string(f) +
+                                            " refers to vertex " + std::to_string(int64_t(int32_t(index))) +
+                                            ", but the mesh has " + std::to_string(in->mNumVertices) + " vertices");
+        mesh.indices.push_back(base + index);
+      }
     }
   }
   // Attributes only some sub-meshes carry cannot be interpolated consistently.

@@ -18,6 +18,11 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Properties& props, std::string k
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_normals, std::string kind)
     : mesh_(std::move(mesh)), flip_normals_(flip_normals), kind_(std::move(kind)) {
+  for (uint32_t index : mesh_.indices)
+    if (index >= mesh_.positions.size())
+      throw std::invalid_argument(kind_ + " mesh: vertex index " + std::to_string(index) + " is out of range (" +
+                                  std::to_string(mesh_.positions.size()) + " vertices)");
+  if (mesh_.indices.size() % 3 != 0) throw std::invalid_argument(kind_ + " mesh: indices do not form triangles");
   for (Vec3& p : mesh_.positions) p = to_world.point(p);
   for (Vec3& n : mesh_.normals) n = normalize(to_world.normal(n));
   // Embree reads each vertex with a 16-byte load; the spare capacity keeps

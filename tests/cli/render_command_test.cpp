@@ -199,5 +199,12 @@ TEST(RenderCommand, FailedRunKeepsThePreviousImage) {
   EXPECT_EQ(content, "previous");
 }
 
+// TBB cannot make a hundred thousand threads; the option is bounded.
+TEST(RenderCommand, ThreadCountIsBounded) {
+  const test::CommandResult r = run_caustica("render " + kCornell + " -D res=8 --spp 1 -q --threads 100000");
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("--threads: Value 100000 not in range"));
+}
+
 }  // namespace
 }  // namespace caustica

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "core/bsdf/bsdf.h"
 #include "tests/support/test_scenes.h"
@@ -269,6 +270,38 @@ TEST(SceneLoader, BadIntegratorSpecs) {
   EXPECT_THAT(message("bdpt:depth=3"), HasSubstr("max_depth"));
   EXPECT_THAT(message("path:max_depth=two"), HasSubstr("--integrator path:max_depth=two: "));
   EXPECT_THAT(message("bdpt:mis=cubic"), HasSubstr("must be power or balance, not 'cubic'"));
+}
+
+// A chain of references recurses like nesting: it is bounded too (b0 on
+// line 2 is the first of the 64 objects built, b64 on line 66 is refused).
+TEST(SceneLoader, LongChainsOfReferencesAreRefused) {
+  std::string xml = "<scene version='3.0.0'>\n";
+  for (int i = 0; i < 100; ++i)
+    xml += "<bsdf type='twosided' id='b" + std::to_string(i) + "'><ref id='b" + std::to_string(i + 1) + "'/></bsdf>\n";
+  xml += "<bsdf type='diffuse' id='b100'/>\n<shape type='sphere'><ref id='b0'/></shape></scene>";
+  EXPECT_THAT(test::load_error(xml, "chain.xml"),
+              HasSubstr("chain.xml:66: objects nested or referring to each other more than 64 deep"));
+}
+
+// A face index beyond the vertices (or negative, read as a huge unsigned
+// one) would be read out of bounds; it is an error naming the file and face.
+TEST(SceneLoader, PlyFaceIndicesOutOfRangeAreRefused) {
+  const auto dir = std::filesystem::temp_directory_path() / "caustica_bad_ply";
+  std::filesystem::create_directories(dir);
+  for (const auto& [name, face, shown] :
+       {std::tuple("high.ply", "3 0 1 7", "7"), std::tuple("low.ply", "3 0 -1 2", "-1")}) {
+    std::ofstream(dir / name) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n"
+                              << face << "\n";
+    const std::string error =
+        test::load_error("<scene version='3.0.0'><shape type='ply'><string name='filename' value='" +
+                         (dir / name).string() + "'/></shape></scene>");
+    EXPECT_THAT(error,
+                HasSubstr("test.xml:1: parameter 'filename' of shape 'ply': mesh file '" + (dir / name).string() +
+                          "': face 0 refers to vertex " + shown + ", but the mesh has 3 vertices"))
+        << name;
+  }
 }
 
 }  // namespace

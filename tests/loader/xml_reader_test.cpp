@@ -298,5 +298,16 @@ TEST(CamelToSnake, Examples) {
   EXPECT_EQ(camel_to_snake(""), "");
 }
 
+// Ten thousand nested elements would exhaust the stack of a recursive
+// reader; it stops at the limit with the element's line.
+TEST(XmlReader, DeepNestingIsRefused) {
+  std::string text = "<scene>\n";
+  for (int i = 0; i < 10000; ++i) text += "<a>";
+  for (int i = 0; i < 10000; ++i) text += "</a>";
+  text += "</scene>";
+  EXPECT_EQ(error_of([&] { read_scene_xml_string(text, "deep.xml"); }),
+            "deep.xml:2: <a> is nested more than 64 elements deep");
+}
+
 }  // namespace
 }  // namespace caustica
