@@ -164,11 +164,12 @@ std::vector<float> FilmBuffer::export_raw() const {
   return out;
 }
 
-void FilmBuffer::add_raw(std::span<const float> pixels, size_t stride, size_t offset, uint64_t splat_paths) {
+void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {
   if (splat_paths > 0) enable_splats();
   splat_paths_per_pixel_ += splat_paths;
+  const size_t per_pixel = raw_channels("").size();
   for (size_t p = 0; p < count_.size(); ++p) {
-    const float* in = &pixels[p * stride + offset];
+    const float* in = &raw[p * per_pixel];
     for_each_sum(*this, p, [&](double& sum) {
       sum += join_floats(in);
       in += 3;

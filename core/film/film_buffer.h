@@ -71,10 +71,9 @@ class FilmBuffer {
   std::vector<std::string> raw_channels(const std::string& prefix) const;
   // Pixel-interleaved, raw_channels().size() values per pixel.
   std::vector<float> export_raw() const;
-  // Adds sums exported from a film of the same size and channels: `pixels`
-  // holds `stride` floats per pixel, the raw channels from `offset` on.
+  // Adds sums export_raw() gave for a film of the same size and channels;
   // `splat_paths` is the light paths per pixel behind its splats.
-  void add_raw(std::span<const float> pixels, size_t stride, size_t offset, uint64_t splat_paths);
+  void add_raw(std::span<const float> raw, uint64_t splat_paths);
 
   uint64_t dropped_samples() const { return dropped_->count.load(); }
   // The first dropped sample (lowest pixel, then index), if any.

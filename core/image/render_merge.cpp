@@ -8,13 +8,9 @@
 
 namespace caustica {
 
-namespace {
-
-std::invalid_argument part_error(const RenderFile& part, const std::string& problem) {
+std::invalid_argument render_error(const RenderFile& part, const std::string& problem) {
   return std::invalid_argument("'" + part.path + "' " + problem);
 }
-
-}  // namespace
 
 std::string metadata_value(const RenderFile& part, const std::string& key) {
   const auto it = part.metadata.find(key);
@@ -29,7 +25,7 @@ double metadata_number(const RenderFile& part, const std::string& key) {
     if (used == text.size()) return value;
   } catch (const std::exception&) {
   }
-  throw part_error(part, "has no number in its " + key + " metadata (got '" + text + "')");
+  throw render_error(part, "has no number in its " + key + " metadata (got '" + text + "')");
 }
 
 namespace {
@@ -49,13 +45,13 @@ std::vector<double> sample_counts(const RenderFile& part) {
 
 void check_same_render(const RenderFile& first, const RenderFile& part) {
   if (part.image.width != first.image.width || part.image.height != first.image.height)
-    throw part_error(part, "differs in size from '" + first.path + "'");
+    throw render_error(part, "differs in size from '" + first.path + "'");
   if (part.image.channels != first.image.channels)
-    throw part_error(part, "has other channels than '" + first.path + "'");
+    throw render_error(part, "has other channels than '" + first.path + "'");
   for (const char* key : {"caustica:scene", "caustica:integrator"})
     if (metadata_value(part, key) != metadata_value(first, key))
-      throw part_error(part, std::string("has another ") + key + " than '" + first.path + "' ('" +
-                                 metadata_value(part, key) + "' against '" + metadata_value(first, key) + "')");
+      throw render_error(part, std::string("has another ") + key + " than '" + first.path + "' ('" +
+                                   metadata_value(part, key) + "' against '" + metadata_value(first, key) + "')");
 }
 
 namespace {
@@ -94,8 +90,8 @@ RenderFile merge_renders(const std::vector<RenderFile>& parts) {
     check_same_render(first, part);
     for (const std::string& seed : render_seeds(part))
       if (const auto [it, fresh] = seed_owner.emplace(seed, part.path); !fresh)
-        throw part_error(part, "and '" + it->second + "' were both rendered with seed " + seed +
-                                   ": they hold the same samples, not independent ones");
+        throw render_error(part, "and '" + it->second + "' were both rendered with seed " + seed +
+                                     ": they hold the same samples, not independent ones");
   }
 
   const Image& shape = first.image;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct RenderFile {
 
 // Reads a render's EXR with its metadata.
 RenderFile read_render(const std::string& path);
+
+// An error about a render, naming its file: "'PATH' problem".
+std::invalid_argument render_error(const RenderFile& render, const std::string& problem);
 
 // A metadata value, or "" if the render has none.
 std::string metadata_value(const RenderFile& render, const std::string& key);

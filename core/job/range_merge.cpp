@@ -12,10 +12,6 @@ namespace caustica {
 
 namespace {
 
-std::invalid_argument part_error(const RenderFile& part, const std::string& problem) {
-  return std::invalid_argument("'" + part.path + "' " + problem);
-}
-
 const char* const kFilm = "raw.";
 const char* const kAovs = "raw.aov.";
 
@@ -40,33 +36,35 @@ void add_part(const RenderFile& part, const std::string& prefix, uint64_t splat_
   std::vector<size_t> from;
   for (const std::string& name : names) {
     const int c = image.channel_index(name);
-    if (c < 0) throw part_error(part, "lacks the raw sum " + name);
+    if (c < 0) throw render_error(part, "lacks the raw sum " + name);
     from.push_back(size_t(c));
   }
   const size_t pixels = size_t(image.width) * image.height, nc = image.channels.size(), n = names.size();
   std::vector<float> sums(pixels * n);
   for (size_t p = 0; p < pixels; ++p)
     for (size_t k = 0; k < n; ++k) sums[p * n + k] = image.pixels[p * nc + from[k]];
-  film.add_raw(sums, n, 0, splats ? splat_paths : 0);
+  film.add_raw(sums, splats ? splat_paths : 0);
 }
 
 struct SampleRange {
   uint64_t first, last;  // inclusive
 };
 
+// A metadata value that must be a whole number of samples.
+uint64_t sample_count(const RenderFile& part, const char* key) {
+  const double x = metadata_number(part, key);
+  if (!(x >= 0 && x < 9.2e18 && x == std::floor(x)))
+    throw render_error(part, std::string("has no sample count in its ") + key + " metadata");
+  return uint64_t(x);
+}
+
 // The sample indices a render holds: its caustica:ranges if it is a merge,
 // else first_sample .. first_sample + spp - 1.
 std::vector<SampleRange> sample_ranges(const RenderFile& part) {
   std::vector<SampleRange> out;
   const std::string list = metadata_value(part, "caustica:ranges");
-  const auto count = [&](const char* key) {
-    const double x = metadata_number(part, key);
-    if (!(x >= 0 && x < 9.2e18 && x == std::floor(x)))
-      throw part_error(part, std::string("has no sample count in its ") + key + " metadata");
-    return uint64_t(x);
-  };
   if (list.empty()) {
-    const uint64_t first = count("caustica:first_sample"), spp = count("caustica:spp");
+    const uint64_t first = sample_count(part, "caustica:first_sample"), spp = sample_count(part, "caustica:spp");
     if (spp > 0) out.push_back({first, first + spp - 1});
     return out;
   }
@@ -76,7 +74,7 @@ std::vector<SampleRange> sample_ranges(const RenderFile& part) {
     char dash = 0;
     std::istringstream range(item);
     if (!(range >> first >> dash >> last) || dash != '-' || last < first)
-      throw part_error(part, "has a malformed caustica:ranges entry '" + item + "'");
+      throw render_error(part, "has a malformed caustica:ranges entry '" + item + "'");
     out.push_back({first, last});
   }
   return out;
@@ -109,14 +107,14 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
   std::vector<const RenderFile*> parts;
   for (const RenderFile& part : input) parts.push_back(&part);
   std::stable_sort(parts.begin(), parts.end(), [](const RenderFile* a, const RenderFile* b) {
-    return metadata_number(*a, "caustica:first_sample") < metadata_number(*b, "caustica:first_sample");
+    return sample_count(*a, "caustica:first_sample") < sample_count(*b, "caustica:first_sample");
   });
   const RenderFile& first = *parts.front();
   for (const RenderFile* part : parts) {
-    if (!has_raw_sums(*part)) throw part_error(*part, "holds no raw sums (render it with --raw-sums)");
+    if (!has_raw_sums(*part)) throw render_error(*part, "holds no raw sums (render it with --raw-sums)");
     check_same_render(first, *part);
     if (metadata_value(*part, "caustica:seed") != metadata_value(first, "caustica:seed"))
-      throw part_error(
+      throw render_error(
           *part, "has another seed than '" + first.path + "': sample ranges merge only within one seed's samples");
   }
   // Every interval of every part, the part's own included, must be disjoint.
@@ -129,9 +127,9 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
     const auto& [r, part] = intervals[i];
     const auto& [before, other] = intervals[i - 1];
     if (r.first <= before.last)
-      throw part_error(*part, "overlaps the sample range of '" + other->path + "' (samples " + std::to_string(r.first) +
-                                  " to " + std::to_string(r.last) + " against " + std::to_string(before.first) +
-                                  " to " + std::to_string(before.last) + ")");
+      throw render_error(*part, "overlaps the sample range of '" + other->path + "' (samples " +
+                                    std::to_string(r.first) + " to " + std::to_string(r.last) + " against " +
+                                    std::to_string(before.first) + " to " + std::to_string(before.last) + ")");
   }
   std::vector<SampleRange> joined;
   uint64_t spp = 0;
@@ -154,7 +152,7 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
   std::optional<FilmBuffer> aovs;
   if (!aov_channels.empty()) aovs.emplace(shape.width, shape.height, aov_channels);
   for (const RenderFile* part : parts) {
-    const uint64_t paths = uint64_t(metadata_number(*part, "caustica:spp"));
+    const uint64_t paths = sample_count(*part, "caustica:spp");
     add_part(*part, kFilm, paths, film);
     if (aovs) add_part(*part, kAovs, 0, *aovs);
   }

@@ -108,32 +108,20 @@ std::string Properties::get_string(const std::string& name) const {
 }
 
 std::vector<std::pair<std::string, std::string>> Properties::effective_parameters() const {
-  std::vector<std::pair<std::string, std::string>> out;
+  // A parameter the plugin never read is read here, so that every value is
+  // recorded the one way the getters record it.
   for (const ParamSpec& spec : info_->params) {
-    const auto read = std::find_if(read_.begin(), read_.end(), [&](const auto& r) { return r.first == spec.name; });
-    if (read != read_.end()) {
-      out.push_back(*read);
-      continue;
-    }
-    if (!has(spec.name) && !spec.default_value) continue;
-    const PropertyValue v = value(spec.name, spec.type);
-    switch (spec.type) {
-      case ParamType::Boolean:
-        out.emplace_back(spec.name, bool_text(std::get<bool>(v.value)));
-        break;
-      case ParamType::Integer:
-        out.emplace_back(spec.name, std::to_string(std::get<int64_t>(v.value)));
-        break;
-      case ParamType::Float:
-        out.emplace_back(spec.name, std::to_string(as_float(v)));
-        break;
-      case ParamType::String:
-        out.emplace_back(spec.name, std::get<std::string>(v.value));
-        break;
-      default:
-        break;
-    }
+    const bool read = std::any_of(read_.begin(), read_.end(), [&](const auto& r) { return r.first == spec.name; });
+    if (read || (!has(spec.name) && !spec.default_value)) continue;
+    if (spec.type == ParamType::Boolean) get_bool(spec.name);
+    if (spec.type == ParamType::Integer) get_int(spec.name);
+    if (spec.type == ParamType::Float) get_float(spec.name);
+    if (spec.type == ParamType::String) get_string(spec.name);
   }
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const ParamSpec& spec : info_->params)
+    for (const auto& r : read_)
+      if (r.first == spec.name) out.push_back(r);
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/render/camera_sample.h"
 #include "core/render/renderer.h"
+#include "core/render/sample_scratch.h"
 #include "core/render/standard_aovs.h"
 #include "core/scene/scene.h"
 
@@ -61,13 +62,12 @@ class IterativeRun final : public IntegratorRun {
 
  private:
   void add_aovs(uint64_t index, FilmBuffer& aovs) const {
-    tbb::enumerable_thread_specific<std::pair<std::unique_ptr<Sampler>, std::vector<float>>> scratch(
-        [&] { return std::pair(scene_.sensor().sampler()->clone(), std::vector<float>()); });
+    tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, 0); });
     tbb::parallel_for(0, aovs.height(), [&](int y) {
-      auto& [sampler, values] = scratch.local();
+      SampleScratch& s = scratch.local();
       for (int x = 0; x < aovs.width(); ++x)
-        add_standard_aovs(scene_, sample_camera_ray(scene_, *sampler, {x, y}, index, seed_), {{x, y}, index}, aovs,
-                          values);
+        add_standard_aovs(scene_, sample_camera_ray(scene_, *s.sampler, {x, y}, index, seed_), {{x, y}, index}, aovs,
+                          s.aov_values);
     });
   }
 

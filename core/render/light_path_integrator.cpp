@@ -9,6 +9,7 @@
 
 #include "core/render/camera_sample.h"
 #include "core/render/renderer.h"
+#include "core/render/sample_scratch.h"
 #include "core/render/standard_aovs.h"
 #include "core/render/tiles.h"
 #include "core/scene/scene.h"
@@ -30,16 +31,14 @@ class LightPathRun final : public IntegratorRun {
 
   void run_pass(PassRange range, const PassTarget& target) override {
     target.film.enable_splats();
-    tbb::enumerable_thread_specific<Scratch> scratch([&] {
-      return Scratch{scene_.sensor().sampler()->clone(), std::vector<float>(channels_), {}};
-    });
+    tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
     const size_t chunk = std::max<size_t>(8, 4 * size_t(target.threads));
     std::vector<SplatList> lists(std::min(chunk, tiles_.size()));
     const ReconstructionFilter& filter = scene_.sensor().film()->filter();
     for (size_t begin = 0; begin < tiles_.size(); begin += chunk) {
       const size_t end = std::min(begin + chunk, tiles_.size());
       tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 1), [&](const tbb::blocked_range<size_t>& r) {
-        Scratch& s = scratch.local();
+        SampleScratch& s = scratch.local();
         for (size_t t = r.begin(); t != r.end(); ++t) {
           lists[t - begin].clear();
           render_tile(tiles_[t], range, target, s, lists[t - begin]);
@@ -65,12 +64,8 @@ class LightPathRun final : public IntegratorRun {
   }
 
  private:
-  struct Scratch {
-    std::unique_ptr<Sampler> sampler;
-    std::vector<float> values, aov_values;
-  };
-
-  void render_tile(const Tile& tile, PassRange range, const PassTarget& target, Scratch& s, SplatList& splats) const {
+  void render_tile(const Tile& tile, PassRange range, const PassTarget& target, SampleScratch& s,
+                   SplatList& splats) const {
     for (int y = tile.lo.y; y < tile.hi.y; ++y)
       for (int x = tile.lo.x; x < tile.hi.x; ++x)
         for (uint64_t i = range.first; i < range.first + range.count; ++i) {

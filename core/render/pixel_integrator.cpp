@@ -9,6 +9,7 @@
 #include "core/render/camera_sample.h"
 #include "core/render/pass_schedule.h"
 #include "core/render/renderer.h"
+#include "core/render/sample_scratch.h"
 #include "core/render/standard_aovs.h"
 #include "core/render/tiles.h"
 #include "core/scene/scene.h"
@@ -30,11 +31,9 @@ class PixelRun final : public IntegratorRun {
 
   void run_pass(PassRange range, const PassTarget& target) override {
     estimator_->begin_pass(range.pass);
-    tbb::enumerable_thread_specific<Scratch> scratch([&] {
-      return Scratch{scene_.sensor().sampler()->clone(), std::vector<float>(channels_), {}};
-    });
+    tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles_.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-      Scratch& s = scratch.local();
+      SampleScratch& s = scratch.local();
       for (size_t t = r.begin(); t != r.end(); ++t) {
         const Tile& tile = tiles_[t];
         for (int y = tile.lo.y; y < tile.hi.y; ++y)
@@ -62,11 +61,6 @@ class PixelRun final : public IntegratorRun {
   std::string summary() const override { return estimator_->summary(); }
 
  private:
-  struct Scratch {
-    std::unique_ptr<Sampler> sampler;
-    std::vector<float> values, aov_values;
-  };
-
   const Scene& scene_;
   uint64_t seed_;
   std::unique_ptr<PixelEstimator> estimator_;
