@@ -2,22 +2,24 @@
 
 #include <csignal>
 
+#include "core/errors/interrupted.h"
+
 namespace caustica {
 
 namespace {
 
-std::atomic<bool> requested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the flag is set from a signal handler");
-
-void on_interrupt(int) {
-  requested.store(true);
-  std::signal(SIGINT, SIG_DFL);
+void on_interrupt(int signal) {
+  stop_request().store(true);
+  std::signal(signal, SIG_DFL);
 }
 
 }  // namespace
 
-void install_interrupt_handler() { std::signal(SIGINT, on_interrupt); }
+void install_interrupt_handler() {
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+}
 
-const std::atomic<bool>& interrupt_requested() { return requested; }
+const std::atomic<bool>& interrupt_requested() { return stop_request(); }
 
 }  // namespace caustica

@@ -10,6 +10,7 @@
 #include "core/cli/plugins_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/tonemap_command.h"
+#include "core/errors/interrupted.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"caustica: a physically based Monte Carlo renderer"};
@@ -34,6 +35,9 @@ int main(int argc, char** argv) {
     if (merge.chosen()) return merge.run();
     if (compare.chosen()) return compare.run();
     if (plugins.chosen()) return plugins.run();
+  } catch (const caustica::Interrupted&) {
+    std::cerr << "caustica: interrupted before anything was rendered\n";
+    return 130;
   } catch (const std::exception& e) {
     std::cerr << "caustica: error: " << e.what() << "\n";
     return 1;

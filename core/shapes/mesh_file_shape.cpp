@@ -1,4 +1,5 @@
-// obj, ply: triangle meshes read from a file (through Assimp).
+// obj, ply: triangle meshes read from a file (OBJ through Assimp, PLY by
+// caustica's own reader, as Assimp's crashes and hangs on damaged PLY files).
 //
 // Polygons are triangulated. A mesh without vertex normals is shaded with
 // its face normals.
@@ -12,17 +13,25 @@
 
 #include <assimp/Importer.hpp>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "core/registry/properties.h"
+#include "core/shapes/ply_reader.h"
 #include "core/shapes/triangle_mesh.h"
 
 namespace caustica {
 namespace {
 
-MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
+std::filesystem::path mesh_file(const Properties& props) {
   const std::filesystem::path file = props.get_path("filename");
   if (!std::filesystem::is_regular_file(file))
     throw props.error("filename", "mesh file '" + file.string() + "' not found");
+  return file;
+}
+
+MeshData read_obj_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
+  const std::filesystem::path file = mesh_file(props);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene)
@@ -61,6 +70,25 @@ MeshData read_mesh_file(const Properties& props, bool flip_tex_coords, bool face
   return mesh;
 }
 
+MeshData read_ply_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
+  const std::filesystem::path file = mesh_file(props);
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
+  MeshData mesh;
+  try {
+    mesh = read_ply(bytes.view());
+  } catch (const PlyError& e) {
+    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
+  }
+  if (face_normals) mesh.normals.clear();
+  if (flip_tex_coords)
+    for (Vec2& uv : mesh.uvs) uv.y = 1 - uv.y;
+  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
+  return mesh;
+}
+
 std::vector<ParamSpec> file_params(const char* flip_default) {
   auto params = mesh_shape_params();
   params.push_back({"filename", ParamType::String, std::nullopt, "mesh file, relative to the scene file"});
@@ -73,14 +101,14 @@ std::vector<ParamSpec> file_params(const char* flip_default) {
 class ObjShape final : public TriangleMesh {
  public:
   explicit ObjShape(const Properties& props)
-      : TriangleMesh(read_mesh_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
+      : TriangleMesh(read_obj_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
                      "obj") {}
 };
 
 class PlyShape final : public TriangleMesh {
  public:
   explicit PlyShape(const Properties& props)
-      : TriangleMesh(read_mesh_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
+      : TriangleMesh(read_ply_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
                      "ply") {}
 };
 

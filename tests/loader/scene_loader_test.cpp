@@ -299,7 +299,7 @@ TEST(SceneLoader, PlyFaceIndicesOutOfRangeAreRefused) {
                          (dir / name).string() + "'/></shape></scene>");
     EXPECT_THAT(error,
                 HasSubstr("test.xml:1: parameter 'filename' of shape 'ply': mesh file '" + (dir / name).string() +
-                          "': face 0 refers to vertex " + shown + ", but the mesh has 3 vertices"))
+                          "': line 13: face 0 refers to vertex " + shown + ", but the mesh has 3 vertices"))
         << name;
   }
 }
