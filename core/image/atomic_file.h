@@ -12,4 +12,9 @@ namespace caustica {
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write);
 
+// Removes the temporary file a write_atomically in progress has made, if
+// any. Async-signal-safe: for a signal handler that is about to end the
+// process while a file is written.
+void remove_pending_temporary_file();
+
 }  // namespace caustica

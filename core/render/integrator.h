@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -29,6 +30,9 @@ struct PassTarget {
   FilmBuffer* aovs;  // the standard first-hit layers, or null
   RenderProgress* progress;
   int threads;
+  // Polled by passes that trace photons, which can take long before any
+  // sample reaches the film: once it is true they stop and add nothing.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // One sample's output before it reaches the film, for replaying it alone.
@@ -46,7 +50,8 @@ class IntegratorRun {
   // The most samples per pixel (or iterations) one pass may hold:
   // progressive methods that refine between passes ask for few.
   virtual uint32_t max_pass_samples() const { return 16; }
-  virtual void run_pass(PassRange range, const PassTarget& target) = 0;
+  // Returns false when target.stop ended the pass before it added anything.
+  virtual bool run_pass(PassRange range, const PassTarget& target) = 0;
   // Called once the passes are done.
   virtual void finish(FilmBuffer&) {}
   // Whether the film's per-pixel variance describes the estimate: not where

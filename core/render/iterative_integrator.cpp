@@ -24,7 +24,7 @@ class IterativeRun final : public IntegratorRun {
   uint32_t max_pass_samples() const override { return 1; }
   bool variance_known() const override { return false; }
 
-  void run_pass(PassRange range, const PassTarget& target) override {
+  bool run_pass(PassRange range, const PassTarget& target) override {
     // Statistics kept across iterations make iteration N of a render that
     // starts at N another estimate than iteration N of one that starts at 0.
     if (range.first != iterations_)
@@ -34,12 +34,13 @@ class IterativeRun final : public IntegratorRun {
           std::to_string(range.first));
     const Film& film = *scene_.sensor().film();
     for (uint64_t i = range.first; i < range.first + range.count; ++i) {
-      state_->iterate(i);
+      if (!state_->iterate(i, target.stop)) return false;
       ++iterations_;
       last_ = i;
       if (target.aovs && i < kAovSamples) add_aovs(i, *target.aovs);
       if (target.progress) target.progress->pixel_samples += uint64_t(film.width()) * film.height();
     }
+    return true;
   }
 
   void finish(FilmBuffer& film) override {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -14,8 +15,9 @@ namespace caustica {
 class IterationState {
  public:
   virtual ~IterationState() = default;
-  // Runs iteration number `iteration` over every pixel.
-  virtual void iterate(uint64_t iteration) = 0;
+  // Runs iteration number `iteration` over every pixel; false, changing
+  // nothing, if `stop` (may be null) turned true before it could finish.
+  virtual bool iterate(uint64_t iteration, const std::atomic<bool>* stop) = 0;
   // The pixel's estimate after the iterations run so far.
   virtual Color estimate(Vec2i pixel) const = 0;
   virtual std::string summary() const { return ""; }

@@ -29,7 +29,7 @@ class LightPathRun final : public IntegratorRun {
 
   bool variance_known() const override { return false; }
 
-  void run_pass(PassRange range, const PassTarget& target) override {
+  bool run_pass(PassRange range, const PassTarget& target) override {
     target.film.enable_splats();
     tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
     const size_t chunk = std::max<size_t>(8, 4 * size_t(target.threads));
@@ -53,6 +53,7 @@ class LightPathRun final : public IntegratorRun {
     }
     done_ += range.count;
     target.film.set_splat_paths_per_pixel(done_);
+    return true;
   }
 
   ReplayedSample replay(Vec2i pixel, uint64_t index) override {

@@ -29,8 +29,8 @@ class PixelRun final : public IntegratorRun {
 
   uint32_t max_pass_samples() const override { return estimator_->max_pass_samples(); }
 
-  void run_pass(PassRange range, const PassTarget& target) override {
-    estimator_->begin_pass(range.pass);
+  bool run_pass(PassRange range, const PassTarget& target) override {
+    if (!estimator_->begin_pass(range.pass, target.stop)) return false;
     tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles_.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       SampleScratch& s = scratch.local();
@@ -47,10 +47,11 @@ class PixelRun final : public IntegratorRun {
         if (target.progress) target.progress->pixel_samples += range.count * tile.pixels();
       }
     });
+    return true;
   }
 
   ReplayedSample replay(Vec2i pixel, uint64_t index) override {
-    estimator_->begin_pass(pass_containing(index, estimator_->max_pass_samples()).number);
+    estimator_->begin_pass(pass_containing(index, estimator_->max_pass_samples()).number, nullptr);
     auto sampler = scene_.sensor().sampler()->clone();
     ReplayedSample out{std::vector<float>(channels_), {}};
     const CameraSample cs = sample_camera_ray(scene_, *sampler, pixel, index, seed_);

@@ -16,8 +16,9 @@ class PixelEstimator {
  public:
   virtual ~PixelEstimator() = default;
   // Before the pass numbered `pass` (core/render/pass_schedule.h), e.g. to
-  // trace that pass's round of photons.
-  virtual void begin_pass(uint32_t) {}
+  // trace that pass's round of photons; false if `stop` (may be null) ended
+  // that before the pass could run.
+  virtual bool begin_pass(uint32_t /*pass*/, const std::atomic<bool>* /*stop*/) { return true; }
   virtual uint32_t max_pass_samples() const { return 16; }
   // Estimates the channels along one camera ray; every number it draws
   // comes from `sampler`, which is on the pixel's camera stream.

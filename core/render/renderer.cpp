@@ -23,7 +23,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
   std::unique_ptr<IntegratorRun> run;
   arena.execute([&] { run = integrator.start(scene, options.seed); });
   const uint32_t max_pass = std::max(1u, run->max_pass_samples());
-  const PassTarget out{film, aovs, progress, threads};
+  const PassTarget out{film, aovs, progress, threads, options.stop};
   uint32_t done = 0;
   double last_pass = 0;
   uint64_t last_count = 1;
@@ -38,7 +38,9 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
       break;
     const uint32_t count = uint32_t(timed ? available : std::min<uint64_t>(available, target - done));
     const double pass_start = elapsed();
-    arena.execute([&] { run->run_pass({pass.number, next, count}, out); });
+    bool completed = false;
+    arena.execute([&] { completed = run->run_pass({pass.number, next, count}, out); });
+    if (!completed) break;
     done += count;
     last_pass = elapsed() - pass_start;
     last_count = count;

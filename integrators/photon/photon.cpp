@@ -60,7 +60,7 @@ class CausticRounds final : public PixelEstimator {
 
   // Without photons there is nothing to refine between passes.
   uint32_t max_pass_samples() const override;
-  void begin_pass(uint32_t pass) override;
+  bool begin_pass(uint32_t pass, const std::atomic<bool>* stop) override;
   void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override {
     return enabled_ ? "rounds=" + std::to_string(rounds_) : "(photon pass skipped)";
@@ -124,14 +124,16 @@ uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(se
 
 // A pass's round is its number in the schedule, so a sample's photons do
 // not depend on where the render of its range began.
-void CausticRounds::begin_pass(uint32_t pass) {
-  if (!enabled_ || round_ == pass) return;
+bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
+  if (!enabled_ || round_ == pass) return true;
+  const uint64_t photons = uint64_t(settings_.photon_.photons);
+  auto traced = trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, stop);
+  if (!traced) return false;
   round_ = pass;
   ++rounds_;
-  const uint64_t photons = uint64_t(settings_.photon_.photons);
-  map_ = PhotonMap(trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_),
-                   settings_.round_radius(initial_radius_, pass));
+  map_ = PhotonMap(std::move(*traced), settings_.round_radius(initial_radius_, pass));
   gather_.emplace(map_, photons, settings_.settings_.max_depth);
+  return true;
 }
 
 void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {

@@ -47,17 +47,21 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const 
 
 }  // namespace
 
-std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
-                                  const PathSettings& settings) {
+std::optional<std::vector<Photon>> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round,
+                                                 uint64_t seed, const PathSettings& settings,
+                                                 const std::atomic<bool>* stop) {
+  const auto stopped = [&] { return stop && stop->load(); };
   const size_t blocks = size_t((count + kBlock - 1) / kBlock);
   std::vector<std::vector<Photon>> found(blocks);
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    if (stopped()) return;
     auto sampler = scene.sensor().sampler()->clone();
     for (uint64_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(round), i, seed);
       trace_photon(scene, kind, *sampler, settings, found[b]);
     }
   });
+  if (stopped()) return std::nullopt;
   std::vector<Photon> photons;
   for (const auto& f : found) photons.insert(photons.end(), f.begin(), f.end());
   return photons;

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/render/path_settings.h"
@@ -25,8 +27,10 @@ enum class PhotonPaths {
 // kind asked for. Photon i of round `round` draws its random numbers from
 // (seed, round, i) and blocks of photons are joined in order, so the result
 // is the same for any thread count. Photons whose paths could not reach the
-// camera within settings.max_depth are not kept.
-std::vector<Photon> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
-                                  const PathSettings& settings);
+// camera within settings.max_depth are not kept. Nothing, once `stop`
+// (may be null) turns true: a production-size round takes long.
+std::optional<std::vector<Photon>> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round,
+                                                 uint64_t seed, const PathSettings& settings,
+                                                 const std::atomic<bool>* stop = nullptr);
 
 }  // namespace caustica

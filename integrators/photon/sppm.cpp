@@ -96,7 +96,7 @@ class StochasticProgressivePhotonMapping;
 class SppmPixels final : public IterationState {
  public:
   SppmPixels(const StochasticProgressivePhotonMapping& settings, const Scene& scene, uint64_t seed);
-  void iterate(uint64_t iteration) override;
+  bool iterate(uint64_t iteration, const std::atomic<bool>* stop) override;
   Color estimate(Vec2i pixel) const override;
   std::string summary() const override { return "iterations=" + std::to_string(iterations_); }
 
@@ -138,18 +138,20 @@ SppmPixels::SppmPixels(const StochasticProgressivePhotonMapping& settings, const
   pixels_.assign(size_t(width_) * scene.sensor().film()->height(), PixelState{{}, {}, 0, r0});
 }
 
-void SppmPixels::iterate(uint64_t iteration) {
+bool SppmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   float max_radius = 0;
   for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
-  const PhotonMap map(trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration,
-                                    seed_, settings_.settings_),
-                      max_radius);
+  auto photons = trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration, seed_,
+                               settings_.settings_, stop);
+  if (!photons) return false;
+  const PhotonMap map(std::move(*photons), max_radius);
   const int height = int(pixels_.size() / size_t(width_));
   tbb::parallel_for(0, height, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();
     for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration);
   });
   ++iterations_;
+  return true;
 }
 
 // D / n + tau / (n photons pi R^2).

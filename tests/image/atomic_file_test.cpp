@@ -35,6 +35,30 @@ TEST(AtomicFile, FailureMidWriteKeepsThePreviousFile) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
 }
 
+// What a signal handler calls before the process ends mid-write.
+TEST(AtomicFile, ThePendingTemporaryFileCanBeRemovedFromASignalHandler) {
+  const auto dir = fresh_dir();
+  const auto target = dir / "render.exr";
+  std::ofstream(target) << "previous image";
+  std::filesystem::path seen;
+  EXPECT_THROW(write_atomically(target,
+                                [&](const std::filesystem::path& tmp) {
+                                  seen = tmp;
+                                  std::ofstream(tmp) << "half of a new ima";
+                                  remove_pending_temporary_file();
+                                  EXPECT_FALSE(std::filesystem::exists(tmp));
+                                  throw std::runtime_error("killed");
+                                }),
+               std::runtime_error);
+  EXPECT_FALSE(seen.empty());
+  EXPECT_EQ(read(target), "previous image");
+  // Nothing is pending once a write has ended.
+  write_atomically(target, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << "new"; });
+  std::ofstream(seen) << "someone else's file";
+  remove_pending_temporary_file();
+  EXPECT_TRUE(std::filesystem::exists(seen));
+}
+
 TEST(AtomicFile, SuccessReplacesInOneStep) {
   const auto dir = fresh_dir();
   const auto target = dir / "render.png";
