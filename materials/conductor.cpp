@@ -26,7 +26,7 @@ namespace {
 class ConductorBsdf final : public DeltaBsdf {
  public:
   explicit ConductorBsdf(const Properties& props)
-      : ior_(conductor_ior(props)), specular_reflectance_(read_texture(props, "specular_reflectance")) {}
+      : ior_(conductor_ior(props)), specular_reflectance_(read_reflectance(props, "specular_reflectance")) {}
 
   uint32_t lobes() const override { return kDeltaReflection; }
 

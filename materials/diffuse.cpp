@@ -18,7 +18,7 @@ namespace {
 
 class DiffuseBsdf final : public Bsdf {
  public:
-  explicit DiffuseBsdf(const Properties& props) : reflectance_(read_texture(props, "reflectance")) {}
+  explicit DiffuseBsdf(const Properties& props) : reflectance_(read_reflectance(props, "reflectance")) {}
 
   uint32_t lobes() const override { return kDiffuseReflection; }
 

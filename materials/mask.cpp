@@ -29,7 +29,7 @@ namespace {
 class MaskBsdf final : public Bsdf {
  public:
   explicit MaskBsdf(const Properties& props)
-      : opacity_(read_texture(props, "opacity")), nested_(props.child<Bsdf>("bsdf")) {
+      : opacity_(read_fraction(props, "opacity")), nested_(props.child<Bsdf>("bsdf")) {
     if (!nested_) throw SceneError(props.where(), "bsdf 'mask' takes one nested bsdf");
   }
 

@@ -38,8 +38,8 @@ Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
 class PhongBsdf final : public Bsdf {
  public:
   explicit PhongBsdf(const Properties& props)
-      : kd_(read_texture(props, "diffuse_reflectance")),
-        ks_(read_texture(props, "specular_reflectance")),
+      : kd_(read_reflectance(props, "diffuse_reflectance")),
+        ks_(read_reflectance(props, "specular_reflectance")),
         exponent_(props.get_float("exponent")) {
     if (!(exponent_ >= 0) || !std::isfinite(exponent_))
       throw props.error("exponent", "must be a finite number of 0 or more");

@@ -46,8 +46,8 @@ Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
 class PlasticBsdf final : public Bsdf {
  public:
   explicit PlasticBsdf(const Properties& props)
-      : kd_(read_texture(props, "diffuse_reflectance")),
-        ks_(read_texture(props, "specular_reflectance")),
+      : kd_(read_reflectance(props, "diffuse_reflectance")),
+        ks_(read_reflectance(props, "specular_reflectance")),
         eta_(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
         nonlinear_(props.get_bool("nonlinear")) {
     if (!(eta_ > 0) || !std::isfinite(eta_)) throw props.error("int_ior", "int_ior / ext_ior must be positive");

@@ -47,7 +47,7 @@ class RoughConductorBsdf final : public Bsdf {
   explicit RoughConductorBsdf(const Properties& props)
       : distribution_(microfacet_from(props)),
         ior_(conductor_ior(props)),
-        specular_reflectance_(read_texture(props, "specular_reflectance")),
+        specular_reflectance_(read_reflectance(props, "specular_reflectance")),
         sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override { return kGlossyReflection; }

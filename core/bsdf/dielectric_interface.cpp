@@ -8,7 +8,7 @@ namespace caustica {
 
 DielectricInterface::DielectricInterface(const Properties& props)
     : eta(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
-      reflectance(read_texture(props, "specular_reflectance")),
-      transmittance(read_texture(props, "specular_transmittance")) {}
+      reflectance(read_reflectance(props, "specular_reflectance")),
+      transmittance(read_reflectance(props, "specular_transmittance")) {}
 
 }  // namespace caustica

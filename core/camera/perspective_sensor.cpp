@@ -33,6 +33,11 @@ class PerspectiveSensor final : public Sensor {
     set_film_and_sampler(child_or_default<Film>(props, "film", "hdrfilm"),
                          child_or_default<Sampler>(props, "sampler", "independent"));
     props.get_float("focus_distance");
+    // As Mitsuba: a scale would stretch the field of view and the clip
+    // distances without saying so. A mirror (scale -1) keeps lengths.
+    for (const Vec3 axis : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
+      if (std::abs(length(to_world_.vector(axis)) - 1) > 1e-3f)
+        throw props.error("to_world", "must not scale (a camera's field of view is set by fov, not by a scale)");
     const float fov = props.get_float("fov");
     if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
     if (!(near_ > 0 && far_ > near_)) throw props.error("far_clip", "need 0 < near_clip < far_clip");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/cli/number_checks.h"
 #include "core/image/render_merge.h"
 
 namespace caustica {
@@ -15,7 +16,7 @@ void CompareCommand::add_to(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   command_->add_option("--epsilon", epsilon_, "relative MSE is (x - ref)^2 / (ref^2 + epsilon)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
 }
 
 int CompareCommand::run() const {

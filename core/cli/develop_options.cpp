@@ -1,12 +1,15 @@
 #include "core/cli/develop_options.h"
 
+#include "core/cli/number_checks.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
 
 void DevelopOptions::add_to(CLI::App& command) {
   command.add_option("--tonemap", tonemap_, "tone operator: " + join_names(Registry::instance().names("tonemap")));
-  command.add_option("--exposure", exposure_, "exposure in stops, before the tone operator");
+  command.add_option("--exposure", exposure_, "exposure in stops, before the tone operator")
+      ->check(finite_number())
+      ->check(CLI::Range(-100.0, 100.0));
   command.add_option("--display", display_, "OpenColorIO display (default: the config's)");
   command.add_option("--view", view_, "OpenColorIO view (default: the display's first)");
   command.add_option("--look", look_, "OpenColorIO look to apply");

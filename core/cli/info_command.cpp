@@ -18,6 +18,7 @@ void InfoCommand::add_to(CLI::App& app) {
 
 int InfoCommand::run() const {
   const auto scene = load_scene(scene_, parse_defines(defines_));
+  for (const std::string& warning : scene.warnings) std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
   std::map<std::string, int> shape_kinds;
   for (const auto& s : scene->shapes()) ++shape_kinds[s->kind()];
   std::printf("scene: %s\n", scene_.c_str());

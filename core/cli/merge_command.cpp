@@ -49,7 +49,13 @@ int MergeCommand::run() const {
     merged.metadata["caustica:estimated_mse"] = number_text(error.mse);
     merged.metadata["caustica:estimated_rel_mse"] = number_text(error.rel_mse);
   }
-  write_exr(output_, merged.image, merged.metadata, exr_format_ == "half" && !ranges);
+  bool half = exr_format_ == "half" && !ranges;
+  if (const size_t n = values_beyond_half(merged.image); half && n > 0) {
+    half = false;
+    std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n", n,
+                 output_.c_str());
+  }
+  write_exr(output_, merged.image, merged.metadata, half);
   std::printf("%zu renders, %s spp -> %s", parts.size(), merged.metadata["caustica:spp"].c_str(), output_.c_str());
   if (error.known) std::printf(", estimated MSE %.4g, relative MSE %.4g", error.mse, error.rel_mse);
   std::printf("\n");

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/cli/interrupt.h"
+#include "core/cli/number_checks.h"
 #include "core/cli/progress_display.h"
 #include "core/image/image_output.h"
 #include "core/job/render_job.h"
@@ -27,8 +28,11 @@ void RenderCommand::add_to(CLI::App& app) {
   command_ = app.add_subcommand("render", "render a scene to OUT.exr (linear) and OUT.png (display)");
   command_->add_option("scene", scene_, "Mitsuba 3 scene file")->required()->check(CLI::ExistingFile);
   command_->add_option("-o,--output", output_, "output EXR (default: SCENE_NAME.exr); the PNG goes beside it");
-  auto* spp = command_->add_option("--spp", spp_, "samples per pixel (default: the scene's sampler)");
-  command_->add_option("--time", time_, "render for this many seconds instead")->excludes(spp);
+  auto* spp = command_->add_option("--spp", spp_, "samples per pixel (default: the scene's sampler)")
+                  ->check(CLI::Range(1u, 1u << 31));
+  command_->add_option("--time", time_, "render for this many seconds instead")
+      ->excludes(spp)
+      ->check(finite_positive());
   command_->add_option("--first-sample", first_sample_,
                        "first sample index: render indices N .. N+spp-1, to merge with renders of other ranges");
   command_->add_flag("--raw-sums", raw_sums_,
@@ -86,6 +90,8 @@ int RenderCommand::run() const {
   settings.threads = threads_;
   settings.stop = &interrupt_requested();
   const RenderJob job = load_render_job(scene_, parse_defines(defines_), settings);
+  for (const std::string& warning : job.scene().warnings)
+    std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
   if (!debug_pixel_.empty()) return replay(job);
 
   const std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
@@ -110,8 +116,15 @@ int RenderCommand::run() const {
       render_layers(result->film, result->aovs ? &*result->aovs : nullptr, stats.variance_known, raw_sums_);
   std::map<std::string, std::string> metadata = render_metadata(job, *result, scene_, raw_sums_);
   metadata["caustica:develop"] = developer.describe();
-  const bool half =
-      !raw_sums_ && (exr_format_.empty() ? job.scene()->sensor().film()->half_float() : exr_format_ == "half");
+  bool half = !raw_sums_ && (exr_format_.empty() ? job.scene()->sensor().film()->half_float() : exr_format_ == "half");
+  if (const size_t n = values_beyond_half(image); half && n > 0) {
+    half = false;
+    std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n", n,
+                 exr.c_str());
+  }
+  if (const size_t n = values_at_float_limit(image); n > 0)
+    std::fprintf(stderr,
+                 "caustica: warning: %zu variance values exceed the float range and are clamped to its largest\n", n);
   write_exr(exr, image, metadata, half);
   write_png(png, image.width, image.height, developer.develop(image), develop_.png_bits());
 

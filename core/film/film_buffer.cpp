@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -102,7 +103,10 @@ std::vector<float> FilmBuffer::variance() const {
     for (size_t c = 0; c < std::min<size_t>(3, nc); ++c) {
       const double mean = weighted_sum_[p * nc + c] / W;
       const double spread = w2x2_[p * 3 + c] - 2 * mean * w2x_[p * 3 + c] + mean * mean * weight2_sum_[p];
-      out[p * 3 + c] = float(std::max(0.0, spread) / (W * W) * n / (n - 1));
+      // The sums are double and cannot overflow; a float can, so the
+      // variance of radiance beyond about 1e19 is clamped to the largest one.
+      const double variance = std::max(0.0, spread) / (W * W) * n / (n - 1);
+      out[p * 3 + c] = float(std::min(variance, double(std::numeric_limits<float>::max())));
     }
   }
   return out;

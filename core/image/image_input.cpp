@@ -4,12 +4,19 @@
 
 #include <stdexcept>
 
+#include "core/image/image_limits.h"
+
 namespace caustica {
 
 Image read_image(const std::filesystem::path& path, std::map<std::string, std::string>* metadata) {
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw std::runtime_error("cannot read image '" + path.string() + "': " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  if (const std::string problem = image_size_problem(spec.width, spec.height); !problem.empty())
+    throw std::runtime_error("cannot read image '" + path.string() + "': " + problem);
+  if (spec.nchannels <= 0 || spec.nchannels > 1024)
+    throw std::runtime_error("cannot read image '" + path.string() + "': it has " + std::to_string(spec.nchannels) +
+                             " channels");
   Image image{spec.width, spec.height, spec.channelnames, {}};
   image.pixels.resize(size_t(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))

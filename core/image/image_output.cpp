@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 #include "core/image/atomic_file.h"
@@ -23,6 +24,18 @@ void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& s
 }
 
 }  // namespace
+
+size_t values_beyond_half(const Image& image) {
+  size_t n = 0;
+  for (float v : image.pixels) n += std::abs(v) > 65504.0f;
+  return n;
+}
+
+size_t values_at_float_limit(const Image& image) {
+  size_t n = 0;
+  for (float v : image.pixels) n += std::abs(v) >= std::numeric_limits<float>::max();
+  return n;
+}
 
 void write_exr(const std::filesystem::path& path, const Image& image,
                const std::map<std::string, std::string>& metadata, bool half_float) {

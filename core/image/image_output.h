@@ -22,6 +22,13 @@ struct Image {
   }
 };
 
+// How many values a half-float file would turn into infinities: those
+// beyond 65504, half's largest, in magnitude.
+size_t values_beyond_half(const Image& image);
+// How many values are at float's largest magnitude, where a larger value
+// was clamped.
+size_t values_at_float_limit(const Image& image);
+
 // Writes a linear OpenEXR file (float or half) with string metadata; atomic.
 void write_exr(const std::filesystem::path& path, const Image& image,
                const std::map<std::string, std::string>& metadata, bool half_float);

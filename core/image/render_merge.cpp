@@ -1,5 +1,6 @@
 #include "core/image/render_merge.h"
 
+#include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <stdexcept>
@@ -22,10 +23,12 @@ double metadata_number(const RenderFile& part, const std::string& key) {
   try {
     size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used == text.size()) return value;
+    // Every number merged is a count or a time: a negative or non-finite
+    // one is not to be trusted, nor turned into an integer.
+    if (used == text.size() && value >= 0 && value < 1e18) return value;
   } catch (const std::exception&) {
   }
-  throw render_error(part, "has no number in its " + key + " metadata (got '" + text + "')");
+  throw render_error(part, "has no count below 10^18 in its " + key + " metadata (got '" + text + "')");
 }
 
 namespace {
@@ -37,7 +40,14 @@ std::vector<double> sample_counts(const RenderFile& part) {
   const int layer = image.channel_index("samples.Y");
   if (layer < 0) return std::vector<double>(pixels, metadata_number(part, "caustica:spp"));
   std::vector<double> counts(pixels);
-  for (size_t p = 0; p < pixels; ++p) counts[p] = image.pixels[p * nc + layer];
+  for (size_t p = 0; p < pixels; ++p) {
+    const float n = image.pixels[p * nc + layer];
+    if (!(n >= 0 && n == std::floor(n)))
+      throw render_error(part, "has " + std::to_string(n) + " in samples.Y at pixel (" +
+                                   std::to_string(p % size_t(image.width)) + ", " +
+                                   std::to_string(p / size_t(image.width)) + "), not a sample count");
+    counts[p] = n;
+  }
   return counts;
 }
 
@@ -106,6 +116,10 @@ RenderFile merge_renders(const std::vector<RenderFile>& parts) {
       totals[p] += n;
       for (size_t c = 0; c < nc; ++c) {
         const double v = part.image.pixels[p * nc + c];
+        if (!std::isfinite(v))
+          throw render_error(part, "has a value that is not finite in " + shape.channels[c] + " at pixel (" +
+                                       std::to_string(p % size_t(shape.width)) + ", " +
+                                       std::to_string(p / size_t(shape.width)) + ")");
         sums[p * nc + c] += rules[c] == Rule::Variance ? n * n * v : rules[c] == Rule::Count ? v : n * v;
       }
     }

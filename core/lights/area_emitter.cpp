@@ -6,6 +6,7 @@
 //       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
 //   </shape>
 
+#include "core/lights/emission_parameter.h"
 #include "core/lights/emitter.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
@@ -17,9 +18,7 @@ namespace {
 
 class AreaEmitter final : public Emitter {
  public:
-  explicit AreaEmitter(const Properties& props) : radiance_(props.get_color("radiance")), where_(props.where()) {
-    if (radiance_.r < 0 || radiance_.g < 0 || radiance_.b < 0) throw props.error("radiance", "must not be negative");
-  }
+  explicit AreaEmitter(const Properties& props) : radiance_(read_emission(props, "radiance")), where_(props.where()) {}
 
   void attach_shape(const Shape* shape) override {
     if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");

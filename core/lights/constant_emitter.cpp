@@ -2,6 +2,7 @@
 //
 //   <emitter type="constant"><rgb name="radiance" value="0.5"/></emitter>
 
+#include "core/lights/emission_parameter.h"
 #include "core/lights/emitter.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
@@ -12,7 +13,7 @@ namespace {
 
 class ConstantEmitter final : public Emitter {
  public:
-  explicit ConstantEmitter(const Properties& props) : radiance_(props.get_color("radiance")) {}
+  explicit ConstantEmitter(const Properties& props) : radiance_(read_emission(props, "radiance")) {}
 
   void prepare(const Bounds3& bounds) override {
     if (bounds.empty()) return;

@@ -5,6 +5,7 @@
 //       <rgb name="intensity" value="10"/>
 //   </emitter>
 
+#include "core/lights/emission_parameter.h"
 #include "core/lights/emitter.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
@@ -16,7 +17,7 @@ namespace {
 class PointEmitter final : public Emitter {
  public:
   explicit PointEmitter(const Properties& props)
-      : intensity_(props.get_color("intensity")),
+      : intensity_(read_emission(props, "intensity")),
         position_(props.get_transform("to_world").point(props.get_point("position"))) {}
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {

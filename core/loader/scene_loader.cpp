@@ -1,9 +1,12 @@
 #include "core/loader/scene_loader.h"
 
+#include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
+#include "core/lights/emitter.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
 #include "core/registry/properties.h"
@@ -77,8 +80,10 @@ class Instantiator {
   }
 
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
-  GivenValues integrator_values;                   // what the last <integrator> built was given
-  int textures = 0;                                // texture plugins built, for the scene features
+  std::vector<SourceLocation> emitter_places;      // where each of `emitters` was written
+  std::vector<std::string> warnings;
+  GivenValues integrator_values;  // what the last <integrator> built was given
+  int textures = 0;               // texture plugins built, for the scene features
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -99,6 +104,7 @@ class Instantiator {
       throw SceneError(node.where, "unknown " + node.tag + " type '" + type +
                                        "' (available: " + join_names(Registry::instance().names(node.tag)) + ")");
     Properties props(*info, node.where);
+    props.set_warnings(&warnings);
     for (const XmlNode& child : node.children) add_child(props, child);
 
     std::shared_ptr<Plugin> plugin;
@@ -110,7 +116,10 @@ class Instantiator {
       throw SceneError(node.where, node.tag + " '" + type + "': " + e.what());
     }
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
-    if (node.tag == "emitter") emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
+    if (node.tag == "emitter") {
+      emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
+      emitter_places.push_back(node.where);
+    }
     if (node.tag == "texture") ++textures;
     if (node.tag == "integrator") integrator_values = props.values();
     return {node.tag, plugin};
@@ -161,7 +170,21 @@ class Instantiator {
   std::set<std::string> building_;
 };
 
-LoadedScene instantiate(const XmlNode& root, const std::string& source) {
+// Light selection and photon emission weigh emitters by power, in float.
+void check_emitter_powers(const Scene& scene, const std::vector<SourceLocation>& places) {
+  for (size_t i = 0; i < places.size(); ++i) {
+    const Color power = scene.emitters()[i]->power();
+    if (!std::isfinite(power.r + power.g + power.b)) {
+      char watts[96];
+      std::snprintf(watts, sizeof watts, "%.3g, %.3g, %.3g W", double(power.r), double(power.g), double(power.b));
+      throw SceneError(places[i], std::string("the emitter's power (") + watts +
+                                      ") overflows single precision; express the scene in other units");
+    }
+  }
+}
+
+LoadedScene instantiate(const XmlNode& root, const std::string& source,
+                        const std::vector<std::string>& unused_defines = {}) {
   Instantiator inst(root);
   std::vector<std::shared_ptr<Shape>> shapes;
   std::shared_ptr<Sensor> sensor;
@@ -190,19 +213,27 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source) {
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
+  check_emitter_powers(*scene, inst.emitter_places);
   scene->set_features(analyze_scene(*scene, inst.textures > 0));
-  return {std::move(scene), std::move(integrator), std::move(inst.integrator_values), std::move(tone_operator)};
+  for (const std::string& name : unused_defines)
+    inst.warnings.push_back(source + ": -D " + name + " is not used by the scene (no $" + name + " in it)");
+  return {std::move(scene), std::move(integrator), std::move(inst.integrator_values), std::move(tone_operator),
+          std::move(inst.warnings)};
 }
 
 }  // namespace
 
 LoadedScene load_scene(const std::filesystem::path& file, const Defines& defines) {
-  return instantiate(read_scene_xml(file, defines), file.string());
+  std::vector<std::string> unused;
+  XmlNode root = read_scene_xml(file, defines, &unused);
+  return instantiate(root, file.string(), unused);
 }
 
 LoadedScene load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
                               const Defines& defines) {
-  return instantiate(read_scene_xml_string(xml, file_for_messages, defines), file_for_messages.string());
+  std::vector<std::string> unused;
+  XmlNode root = read_scene_xml_string(xml, file_for_messages, defines, &unused);
+  return instantiate(root, file_for_messages.string(), unused);
 }
 
 std::shared_ptr<Integrator> make_integrator(const std::string& spec, const GivenValues& inherited) {

@@ -24,6 +24,9 @@ struct LoadedScene {
   std::shared_ptr<const Integrator> integrator;  // the file's <integrator>, or path with its defaults
   GivenValues integrator_values;                 // the parameters its <integrator> gave
   std::shared_ptr<ToneOperator> tone_operator;   // the file's <tonemap>, or null
+  // What was accepted but is probably not what the author meant, each
+  // naming its file and line, and -D names no $name used.
+  std::vector<std::string> warnings;
 
   Scene& operator*() const { return *scene; }
   Scene* operator->() const { return scene.get(); }

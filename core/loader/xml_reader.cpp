@@ -6,6 +6,7 @@
 #include <fstream>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -110,9 +111,21 @@ struct FileContext {
 // Parameters are shared across included files, so one reader serves the whole tree.
 class Reader {
  public:
-  explicit Reader(const Defines& defines) : params_(defines) {}
+  explicit Reader(const Defines& defines) : params_(defines), defines_(defines) {}
+
+  // The names -D defined that no $name has used so far.
+  std::vector<std::string> unused_defines() const {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : defines_)
+      if (!used_.count(name)) out.push_back(name);
+    return out;
+  }
 
   XmlNode read_file(const fs::path& file, const SourceLocation& blame, const std::string& what) {
+    std::error_code ec;
+    // A device or a pipe (/dev/zero) would be read forever.
+    if (fs::exists(file, ec) && !fs::is_regular_file(file, ec))
+      throw SceneError(blame, "the " + what + " '" + file.string() + "' is not a regular file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SceneError(blame, "cannot open " + what + " '" + file.string() + "'");
     std::ostringstream contents;
@@ -159,7 +172,7 @@ class Reader {
     }
   }
 
-  std::string substitute(std::string_view value, const SourceLocation& where) const {
+  std::string substitute(std::string_view value, const SourceLocation& where) {
     std::string out;
     size_t i = 0;
     while (i < value.size()) {
@@ -175,6 +188,7 @@ class Reader {
         throw SceneError(where,
                          "undefined parameter '$" + name + "' (define it with <default> or -D " + name + "=value)");
       out += found->second;
+      used_.insert(name);
       i = end;
     }
     return out;
@@ -188,8 +202,11 @@ class Reader {
       throw SceneError(ctx.at(element), "<" + std::string(element.name()) + "> is nested more than " +
                                             std::to_string(kMaxSceneDepth) + " elements deep");
     XmlNode node{element.name(), {}, {}, ctx.at(element)};
-    for (pugi::xml_attribute attribute : element.attributes())
+    for (pugi::xml_attribute attribute : element.attributes()) {
+      if (node.attribute(attribute.name()))
+        throw SceneError(node.where, "<" + node.tag + "> has two '" + attribute.name() + "' attributes");
       node.attributes.emplace_back(attribute.name(), substitute(attribute.value(), node.where));
+    }
     if (ctx.upgrade) upgrade_from_0x(node);
     const bool was_ldrfilm = ctx.upgrade && element.name() == std::string_view("film") &&
                              element.attribute("type").value() == std::string_view("ldrfilm");
@@ -228,6 +245,8 @@ class Reader {
   }
 
   Defines params_;
+  const Defines& defines_;
+  std::set<std::string> used_;
   std::vector<std::pair<fs::path, std::string>> open_files_;  // identity, name for messages
 };
 
@@ -249,13 +268,21 @@ std::string camel_to_snake(std::string_view name) {
   return out;
 }
 
-XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines) {
-  return Reader(defines).read_file(file, {file.string(), 0}, "scene file");
+XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines,
+                       std::vector<std::string>* unused_defines) {
+  Reader reader(defines);
+  XmlNode root = reader.read_file(file, {file.string(), 0}, "scene file");
+  if (unused_defines) *unused_defines = reader.unused_defines();
+  return root;
 }
 
 XmlNode read_scene_xml_string(std::string_view text, const std::filesystem::path& file_for_messages,
-                              const std::map<std::string, std::string>& defines) {
-  return Reader(defines).read_text(text, file_for_messages);
+                              const std::map<std::string, std::string>& defines,
+                              std::vector<std::string>* unused_defines) {
+  Reader reader(defines);
+  XmlNode root = reader.read_text(text, file_for_messages);
+  if (unused_defines) *unused_defines = reader.unused_defines();
+  return root;
 }
 
 }  // namespace caustica

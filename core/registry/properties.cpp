@@ -1,6 +1,7 @@
 #include "core/registry/properties.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace caustica {
@@ -47,6 +48,14 @@ const PropertyValue* Properties::find(const std::string& name) const {
 SceneError Properties::error(const std::string& name, const std::string& problem) const {
   const PropertyValue* v = find(name);
   return SceneError(v ? v->where : where_, "parameter '" + name + "' of " + plugin_name(*info_) + ": " + problem);
+}
+
+void Properties::warn(const std::string& name, const std::string& problem) const {
+  const std::string message = error(name, problem).what();
+  if (warnings_)
+    warnings_->push_back(message);
+  else
+    std::fprintf(stderr, "caustica: warning: %s\n", message.c_str());
 }
 
 PropertyValue Properties::value(const std::string& name, ParamType wanted) const {

@@ -75,6 +75,11 @@ class Properties {
   // An error about parameter `name`, placed where it was written (or at the
   // plugin if it was left at its default).
   SceneError error(const std::string& name, const std::string& problem) const;
+  // A warning, placed as error() places errors, for a value that is
+  // accepted but probably not what the author meant. It goes to the list
+  // set_warnings() named (the loader's), else to standard error.
+  void warn(const std::string& name, const std::string& problem) const;
+  void set_warnings(std::vector<std::string>* warnings) { warnings_ = warnings; }
 
  private:
   const PropertyValue* find(const std::string& name) const;
@@ -84,6 +89,7 @@ class Properties {
   std::vector<std::pair<std::string, PropertyValue>> values_;
   std::vector<std::pair<ObjectValue, SourceLocation>> children_;
   mutable std::vector<std::pair<std::string, std::string>> read_;  // effective values, as the getters returned them
+  std::vector<std::string>* warnings_ = nullptr;
   void record(const std::string& name, std::string value) const;
 };
 

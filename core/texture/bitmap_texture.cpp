@@ -22,9 +22,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <vector>
 
+#include "core/image/image_limits.h"
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture.h"
@@ -101,6 +103,7 @@ class BitmapTexture final : public Texture {
   }
 
   Color mean() const override { return mean_; }
+  ValueRange range() const override { return range_; }
 
  private:
   void load(const Properties& props, const std::filesystem::path& file, bool raw) {
@@ -110,8 +113,9 @@ class BitmapTexture final : public Texture {
     if (!in) throw props.error("filename", "cannot read image '" + file.string() + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
-      throw props.error("filename", "image '" + file.string() + "' is empty");
+    if (channels <= 0) throw props.error("filename", "image '" + file.string() + "' has no channels");
+    if (const std::string problem = image_size_problem(spec.width, spec.height); !problem.empty())
+      throw props.error("filename", "image '" + file.string() + "': " + problem);
     std::vector<float> data(size_t(spec.width) * spec.height * channels);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
       throw props.error("filename", "cannot read image '" + file.string() + "': " + in->geterror());
@@ -123,13 +127,20 @@ class BitmapTexture final : public Texture {
     width_ = spec.width;
     height_ = spec.height;
     pixels_.resize(size_t(width_) * height_);
+    range_ = {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
     double sum[3] = {};
     for (size_t i = 0; i < pixels_.size(); ++i) {
       const float* p = &data[i * channels];
       Color c = channels >= 3 ? Color(p[0], p[1], p[2]) : Color(p[0]);
       if (decode) c = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
+      if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+        throw props.error("filename", "image '" + file.string() + "' has a pixel that is not finite, at (" +
+                                          std::to_string(i % size_t(width_)) + ", " +
+                                          std::to_string(i / size_t(width_)) + ")");
       pixels_[i] = c;
       for (int k = 0; k < 3; ++k) sum[k] += c[k];
+      range_.lowest = std::min({range_.lowest, c.r, c.g, c.b});
+      range_.highest = std::max({range_.highest, c.r, c.g, c.b});
     }
     const double n = double(pixels_.size());
     mean_ = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
@@ -140,6 +151,7 @@ class BitmapTexture final : public Texture {
   int width_ = 0, height_ = 0;
   std::vector<Color> pixels_;  // linear RGB, top row first
   Color mean_;
+  ValueRange range_;
   bool bilinear_ = true;
   WrapMode wrap_ = WrapMode::Repeat;
   std::optional<Transform> to_uv_;

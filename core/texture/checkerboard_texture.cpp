@@ -45,6 +45,10 @@ class CheckerboardTexture final : public Texture {
   }
 
   Color mean() const override { return (color0_->mean() + color1_->mean()) * 0.5f; }
+  ValueRange range() const override {
+    const ValueRange a = color0_->range(), b = color1_->range();
+    return {std::min(a.lowest, b.lowest), std::max(a.highest, b.highest)};
+  }
 
  private:
   std::shared_ptr<Texture> color0_, color1_;

@@ -1,16 +1,24 @@
 #pragma once
 
+#include <algorithm>
+
 #include "core/math/color.h"
 #include "core/math/vec.h"
 #include "core/registry/plugin.h"
 
 namespace caustica {
 
+// The smallest and the largest value any channel of a texture takes.
+struct ValueRange {
+  float lowest = 0, highest = 0;
+};
+
 // A colour that varies over a surface's (u, v) parametrisation.
 class Texture : public Plugin {
  public:
   virtual Color eval(Vec2 uv) const = 0;
   virtual Color mean() const = 0;
+  virtual ValueRange range() const = 0;
 };
 
 // What an rgb, spectrum or float value stands for where a texture is accepted.
@@ -19,6 +27,7 @@ class ConstantTexture final : public Texture {
   explicit ConstantTexture(Color c) : c_(c) {}
   Color eval(Vec2) const override { return c_; }
   Color mean() const override { return c_; }
+  ValueRange range() const override { return {std::min({c_.r, c_.g, c_.b}), std::max({c_.r, c_.g, c_.b})}; }
 
  private:
   Color c_;

@@ -236,5 +236,68 @@ TEST(RenderCommand, ThreadCountIsBounded) {
   EXPECT_THAT(r.output, HasSubstr("--threads: Value 100000 not in range"));
 }
 
+// Numbers a render cannot use are refused, not replaced by a default.
+TEST(RenderCommand, NumericOptionsAreChecked) {
+  const std::string render = "render " + kCornell + " -D res=8 -q -o " + (temp_dir() / "numbers.exr").string();
+  for (const auto& [option, message] : {std::pair<std::string, std::string>{"--spp 0", "--spp: Value 0 not in range"},
+                                        {"--time 0", "--time: '0' is not a finite number above zero"},
+                                        {"--time -1", "--time: '-1' is not a finite number above zero"},
+                                        {"--time nan", "--time: 'nan' is not a finite number above zero"},
+                                        {"--time inf", "--time: 'inf' is not a finite number above zero"},
+                                        {"--spp 1 --exposure nan", "--exposure: 'nan' is not a finite number"},
+                                        {"--spp 1 --exposure 1e30", "--exposure: Value 1e30 not in range"}}) {
+    const test::CommandResult r = run_caustica(render + " " + option);
+    EXPECT_NE(r.status, 0) << option;
+    EXPECT_THAT(r.output, HasSubstr(message)) << option;
+  }
+  const test::CommandResult compare = run_caustica("compare " + kCornell + " " + kCornell + " --epsilon nan");
+  EXPECT_NE(compare.status, 0);
+  EXPECT_THAT(compare.output, HasSubstr("--epsilon: 'nan' is not a finite number above zero"));
+}
+
+TEST(RenderCommand, UnusedDefinesAreReported) {
+  const test::CommandResult r =
+      run_caustica("render " + kCornell + " -D res=8 -D rse=4 --spp 1 -q -o " + (temp_dir() / "defines.exr").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output,
+              HasSubstr("caustica: warning: " + kCornell + ": -D rse is not used by the scene (no $rse in it)"));
+  EXPECT_THAT(r.output, testing::Not(HasSubstr("-D res ")));
+}
+
+// A small emitter of radiance 1e5 puts values beyond half float's 65504 in
+// the image, and one of 1e30 variances beyond float's range: neither file
+// may hold an infinity.
+TEST(RenderCommand, OutputsHoldNoInfinity) {
+  const auto scene = temp_dir() / "bright.xml";
+  std::ofstream(scene) << R"(<scene version="3.0.0">
+  <sensor type="perspective"><transform name="to_world"><lookat origin="0,0,5" target="0,0,0"/></transform>
+    <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/></film>
+  </sensor>
+  <shape type="sphere"><float name="radius" value="0.5"/>
+    <emitter type="area"><rgb name="radiance" value="$L"/></emitter></shape>
+  <shape type="rectangle"><transform name="to_world"><translate z="-1"/></transform></shape>
+</scene>)";
+  for (const std::string format : {"half", "float"})
+    for (const std::string radiance : {"1e5", "1e30"}) {
+      const auto exr = temp_dir() / "bright.exr";
+      const test::CommandResult r = run_caustica("render " + scene.string() + " -D L=" + radiance +
+                                                 " --spp 4 -q --exr-format " + format + " -o " + exr.string());
+      ASSERT_EQ(r.status, 0) << r.output;
+      if (format == "half") {
+        EXPECT_THAT(r.output, HasSubstr("values exceed 65504, the largest half float"));
+      }
+      if (radiance == "1e30") {
+        EXPECT_THAT(r.output, HasSubstr("variance values exceed the float range"));
+      }
+      auto in = OIIO::ImageInput::open(exr.string());
+      ASSERT_TRUE(in);
+      EXPECT_EQ(in->spec().format, OIIO::TypeDesc::FLOAT) << format << " " << radiance;
+      std::vector<float> pixels(size_t(16) * 16 * in->spec().nchannels);
+      ASSERT_TRUE(in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+      EXPECT_EQ(std::count_if(pixels.begin(), pixels.end(), [](float v) { return !std::isfinite(v); }), 0)
+          << format << " " << radiance;
+    }
+}
+
 }  // namespace
 }  // namespace caustica

@@ -3,6 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace caustica {
 namespace {
 
@@ -97,6 +100,32 @@ TEST(RenderMerge, RefusesRendersThatDoNotBelongTogether) {
   bigger.image.pixels.resize(16);
   EXPECT_THAT(merge_error({kA, bigger}), HasSubstr("'b.exr' differs in size from 'a.exr'"));
   EXPECT_EQ(merge_error({}), "nothing to merge");
+}
+
+// Metadata and sample counts are read from files anyone can write: what
+// cannot be a count is refused, never converted.
+TEST(RenderMerge, RefusesCountsItCannotTrust) {
+  RenderFile a = kA, b = kB;
+  for (RenderFile* f : {&a, &b}) {
+    f->image.channels = {"R", "G", "B"};
+    f->image.pixels.resize(3);
+  }
+  for (const char* spp : {"-2", "nan", "inf", "1e300", "two"}) {
+    b.metadata["caustica:spp"] = spp;
+    EXPECT_THAT(merge_error({a, b}), HasSubstr("'b.exr' has no count below 10^18 in its caustica:spp metadata (got '" +
+                                               std::string(spp) + "')"));
+  }
+  RenderFile rays = kB;
+  rays.metadata["caustica:rays"] = "-100";
+  EXPECT_THAT(merge_error({kA, rays}), HasSubstr("in its caustica:rays metadata (got '-100')"));
+  for (float n : {-1.0f, 2.5f, std::nanf("")}) {
+    RenderFile c = kB;
+    c.image.pixels.back() = n;
+    EXPECT_THAT(merge_error({kA, c}), HasSubstr("in samples.Y at pixel (0, 0), not a sample count")) << n;
+  }
+  RenderFile inf = kB;
+  inf.image.pixels[0] = std::numeric_limits<float>::infinity();
+  EXPECT_THAT(merge_error({kA, inf}), HasSubstr("'b.exr' has a value that is not finite in R at pixel (0, 0)"));
 }
 
 TEST(RenderMerge, InterruptedIfAnyPartWas) {

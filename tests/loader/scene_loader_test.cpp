@@ -228,6 +228,42 @@ INSTANTIATE_TEST_SUITE_P(
                  "<integer name='width' value='65536'/><integer name='height' value='65536'/></film>"
                  "</sensor></scene>",
                  "width x height must be at most 67108864 pixels"},
+        BadInput{"duplicate attribute",
+                 "<scene version='3.0.0'>\n<shape type='sphere'>\n<float name='radius' value='1' value='2'/>"
+                 "</shape></scene>",
+                 "bad.xml:3: <float> has two 'value' attributes"},
+        BadInput{"negative point intensity",
+                 "<scene version='3.0.0'>\n<emitter type='point'>\n<rgb name='intensity' value='1, -1, 1'/>"
+                 "</emitter></scene>",
+                 "bad.xml:3: parameter 'intensity' of emitter 'point': must not be negative"},
+        BadInput{"negative environment",
+                 "<scene version='3.0.0'>\n<emitter type='constant'>\n<float name='radiance' value='-0.5'/>"
+                 "</emitter></scene>",
+                 "bad.xml:3: parameter 'radiance' of emitter 'constant': must not be negative"},
+        BadInput{"emitter power beyond float",
+                 "<scene version='3.0.0'>\n<shape type='sphere'/>\n<emitter type='point'>"
+                 "<rgb name='intensity' value='1e37'/></emitter></scene>",
+                 "bad.xml:3: the emitter's power (1.26e+38, 1.26e+38, 1.26e+38 W) overflows single precision"},
+        BadInput{"negative reflectance",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<rgb name='reflectance' value='0.5, -0.1, 0.5'/>"
+                 "</bsdf></scene>",
+                 "bad.xml:3: parameter 'reflectance' of bsdf 'diffuse': must not be negative (it goes down to -0.1)"},
+        BadInput{"negative check in a checkerboard reflectance",
+                 "<scene version='3.0.0'>\n<bsdf type='plastic'>\n<texture type='checkerboard' "
+                 "name='diffuse_reflectance'><float name='color1' value='-2'/></texture></bsdf></scene>",
+                 "parameter 'diffuse_reflectance' of bsdf 'plastic': must not be negative (it goes down to -2)"},
+        BadInput{"opacity above one",
+                 "<scene version='3.0.0'>\n<bsdf type='mask'>\n<float name='opacity' value='1.5'/>"
+                 "<bsdf type='diffuse'/></bsdf></scene>",
+                 "bad.xml:3: parameter 'opacity' of bsdf 'mask': must lie in [0, 1] (it spans 1.5 to 1.5)"},
+        BadInput{"scaled camera",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><transform name='to_world'>\n"
+                 "<scale value='2'/></transform></sensor></scene>",
+                 "bad.xml:2: parameter 'to_world' of sensor 'perspective': must not scale"},
+        BadInput{"huge value quoted",
+                 "<scene version='3.0.0'>\n<shape type='sphere'><float name='radius' value='" +
+                     std::string(10000000, '7') + "x'/></shape></scene>",
+                 "bad.xml:2: cannot parse '" + std::string(60, '7') + "... (10000001 characters)' as float"},
         BadInput{"two sensors",
                  "<scene version='3.0.0'>\n<sensor type='perspective'/>\n<sensor type='perspective'/>"
                  "</scene>",
@@ -281,6 +317,49 @@ TEST(SceneLoader, LongChainsOfReferencesAreRefused) {
   xml += "<bsdf type='diffuse' id='b100'/>\n<shape type='sphere'><ref id='b0'/></shape></scene>";
   EXPECT_THAT(test::load_error(xml, "chain.xml"),
               HasSubstr("chain.xml:66: objects nested or referring to each other more than 64 deep"));
+}
+
+// The excerpt keeps a hostile value's message short.
+TEST(SceneLoader, ErrorsQuoteOnlyAnExcerptOfLongValues) {
+  const std::string error =
+      test::load_error("<scene version='3.0.0'><shape type='sphere'><float name='radius' value='" +
+                       std::string(10000000, '7') + "x'/></shape></scene>");
+  EXPECT_LT(error.size(), 300u);
+}
+
+TEST(SceneLoader, MirroredCameraIsAccepted) {
+  EXPECT_NO_THROW(
+      test::scene_from_xml("<scene version='3.0.0'><sensor type='perspective'><transform "
+                           "name='to_world'><scale x='-1'/></transform></sensor></scene>"));
+}
+
+// Accepted, as Mitsuba accepts them, but said: a reflectance above 1 and a
+// -D nothing uses.
+TEST(SceneLoader, WarningsNameTheFileAndLine) {
+  const LoadedScene scene = load_scene_string(
+      "<scene version='3.0.0'>\n<default name='res' value='8'/>\n<shape type='sphere'>\n<bsdf type='diffuse'>\n"
+      "<rgb name='reflectance' value='0.5, 5, 0.5'/></bsdf></shape></scene>",
+      "warm.xml", {{"res", "16"}, {"spp", "4"}});
+  EXPECT_THAT(scene.warnings,
+              testing::ElementsAre("warm.xml:5: parameter 'reflectance' of bsdf 'diffuse': goes up to 5: a surface "
+                                   "that reflects more light than it receives gains energy",
+                                   "warm.xml: -D res is not used by the scene (no $res in it)",
+                                   "warm.xml: -D spp is not used by the scene (no $spp in it)"));
+  const LoadedScene used = load_scene_string(
+      "<scene version='3.0.0'>\n<default name='res' value='8'/>\n<sensor type='perspective'><film type='hdrfilm'>"
+      "<integer name='width' value='$res'/></film></sensor></scene>",
+      "used.xml", {{"res", "16"}});
+  EXPECT_TRUE(used.warnings.empty());
+}
+
+// A file of a few bytes can declare a gigapixel image; it is refused before
+// any pixel is allocated.
+TEST(SceneLoader, TexturesDeclaringHugeSizesAreRefused) {
+  const auto ppm = write_temp("huge.ppm", "P6\n60000 60000\n255\n");
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><bsdf type='diffuse'><texture type='bitmap' "
+                               "name='reflectance'><string name='filename' value='" +
+                               ppm.string() + "'/></texture></bsdf></scene>"),
+              HasSubstr("': its size 60000x60000 exceeds the limit of 65536 pixels a side and 2^28 pixels in all"));
 }
 
 // A face index beyond the vertices (or negative, read as a huge unsigned

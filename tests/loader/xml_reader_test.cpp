@@ -149,6 +149,19 @@ TEST(XmlReader, MissingFile) {
   EXPECT_THAT(message, HasSubstr(missing.string()));
 }
 
+// /dev/zero would be read forever.
+TEST(XmlReader, IncludesMustBeRegularFiles) {
+  EXPECT_EQ(error_of([] { read_scene_xml_string("<scene>\n<include filename='/dev/zero'/>\n</scene>", "s.xml"); }),
+            "s.xml:2: the included file '/dev/zero' is not a regular file");
+}
+
+TEST(XmlReader, ReportsTheDefinesNoReferenceUsed) {
+  std::vector<std::string> unused;
+  read_scene_xml_string("<scene><default name='a' value='$b'/><float name='x' value='$a'/></scene>", "s.xml",
+                        {{"a", "1"}, {"b", "2"}, {"c", "3"}}, &unused);
+  EXPECT_EQ(unused, std::vector<std::string>{"c"});
+}
+
 TEST(XmlReader, ReadsFromFile) {
   TempDir dir;
   fs::path file = dir.write("scene.xml", "<scene>\n<sensor type='perspective'/>\n</scene>\n");
