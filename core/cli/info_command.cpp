@@ -34,8 +34,11 @@ int InfoCommand::run() const {
   }
   std::printf("\nemitters: %zu (area: %d, delta: %d, environment: %d)\n", scene->emitters().size(), area, delta,
               infinite);
+  // Stored relative to the camera; shown in the scene file's coordinates.
   const Bounds3& b = scene->bounds();
-  std::printf("bounds: (%g, %g, %g) - (%g, %g, %g)\n", b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  const Vec3d o = scene->render_origin();
+  std::printf("bounds: (%g, %g, %g) - (%g, %g, %g)\n", o.x + b.lo.x, o.y + b.lo.y, o.z + b.lo.z, o.x + b.hi.x,
+              o.y + b.hi.y, o.z + b.hi.z);
   std::printf("%s", describe(scene->features()).c_str());
   std::printf("what each integrator does with it (default parameters):\n");
   for (const std::string& name : Registry::instance().names("integrator")) {

@@ -47,7 +47,7 @@ PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
 // Instantiates plugins from nodes, each object once, resolving <ref> by id.
 class Instantiator {
  public:
-  explicit Instantiator(const XmlNode& root) { collect_ids(root, true); }
+  Instantiator(const XmlNode& root, Vec3d render_origin) : render_origin_(render_origin) { collect_ids(root, true); }
 
   ObjectValue build(const XmlNode& node) {
     // Nested objects and chains of references both recurse through here.
@@ -105,6 +105,7 @@ class Instantiator {
                                        "' (available: " + join_names(Registry::instance().names(node.tag)) + ")");
     Properties props(*info, node.where);
     props.set_warnings(&warnings);
+    props.set_render_origin(render_origin_);
     for (const XmlNode& child : node.children) add_child(props, child);
 
     std::shared_ptr<Plugin> plugin;
@@ -164,6 +165,7 @@ class Instantiator {
     }
   }
 
+  Vec3d render_origin_;
   int depth_ = 0;
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
@@ -183,9 +185,23 @@ void check_emitter_powers(const Scene& scene, const std::vector<SourceLocation>&
   }
 }
 
+// Where the camera stands, in double: the origin of render space, so that
+// geometry far from the world's origin is stored in float relative to the
+// camera, where its precision matters (as pbrt-v4 renders in camera-world
+// space).
+Vec3d camera_position(const XmlNode& root) {
+  for (const XmlNode& node : root.children)
+    if (node.tag == "sensor")
+      for (const XmlNode& child : node.children)
+        if (child.tag == "transform" && child.attribute("name") && *child.attribute("name") == "to_world")
+          return parse_transform(child).point_double({0, 0, 0});
+  return {};
+}
+
 LoadedScene instantiate(const XmlNode& root, const std::string& source,
                         const std::vector<std::string>& unused_defines = {}) {
-  Instantiator inst(root);
+  const Vec3d origin = camera_position(root);
+  Instantiator inst(root, origin);
   std::vector<std::shared_ptr<Shape>> shapes;
   std::shared_ptr<Sensor> sensor;
   std::shared_ptr<Integrator> integrator;
@@ -214,6 +230,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   if (!integrator) integrator = make_integrator("path");
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);
+  scene->set_render_origin(origin);
   scene->set_features(analyze_scene(*scene, inst.textures > 0));
   for (const std::string& name : unused_defines)
     inst.warnings.push_back(source + ": -D " + name + " is not used by the scene (no $" + name + " in it)");

@@ -1,6 +1,8 @@
 #include "core/loader/transform_parser.h"
 
+#include <cctype>
 #include <stdexcept>
+#include <vector>
 
 #include "core/registry/property_value.h"
 
@@ -8,19 +10,37 @@ namespace caustica {
 
 namespace {
 
-float number(const XmlNode& node, const char* attr, float fallback) {
+// Transforms are read in double: a translation of 1e7 keeps its fraction.
+double number(const XmlNode& node, const char* attr, double fallback) {
   const std::string* v = node.attribute(attr);
-  return v ? float(std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value)) : fallback;
+  return v ? std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value) : fallback;
 }
 
-Vec3 triple(const XmlNode& node, const char* attr) {
+// The numbers of a list such as "1, 2, 3" or "1 0 0 0 ...".
+std::vector<double> numbers(const std::string& text, const SourceLocation& where) {
+  std::vector<double> values;
+  std::string token;
+  for (char c : text + " ") {
+    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+      if (!token.empty()) values.push_back(std::get<double>(parse_value_text(ValueKind::Float, token, where).value));
+      token.clear();
+    } else {
+      token += c;
+    }
+  }
+  return values;
+}
+
+Vec3d triple(const XmlNode& node, const char* attr) {
   const std::string* v = node.attribute(attr);
   if (!v) throw SceneError(node.where, "<" + node.tag + "> needs a '" + attr + "' attribute");
-  return std::get<Vec3>(parse_value_text(ValueKind::Vector, *v, node.where).value);
+  const std::vector<double> values = numbers(*v, node.where);
+  if (values.size() != 3) throw SceneError(node.where, "cannot parse '" + *v + "' as vector (expected 3 numbers)");
+  return {values[0], values[1], values[2]};
 }
 
 // value="x, y, z" or x/y/z attributes, each defaulting to `fallback`.
-Vec3 xyz(const XmlNode& node, float fallback) {
+Vec3d xyz(const XmlNode& node, double fallback) {
   if (node.attribute("value")) return triple(node, "value");
   return {number(node, "x", fallback), number(node, "y", fallback), number(node, "z", fallback)};
 }
@@ -33,32 +53,22 @@ Transform parse_step(const XmlNode& step) {
   if (step.tag == "scale") {
     step.check_attributes({"x", "y", "z", "value"});
     if (const std::string* v = step.attribute("value"); v && v->find_first_of(", ") == std::string::npos) {
-      const float s = number(step, "value", 1);
+      const double s = number(step, "value", 1);
       return Transform::scale({s, s, s});
     }
     return Transform::scale(xyz(step, 1));
   }
   if (step.tag == "rotate") {
     step.check_attributes({"x", "y", "z", "value", "angle"});
-    const Vec3 axis = xyz(step, 0);
-    if (squared_length(axis) == 0) throw SceneError(step.where, "<rotate> needs a non-zero axis");
+    const Vec3d axis = xyz(step, 0);
+    if (axis == Vec3d()) throw SceneError(step.where, "<rotate> needs a non-zero axis");
     return Transform::rotate(axis, number(step, "angle", 0));
   }
   if (step.tag == "matrix") {
     step.check_attributes({"value"});
     const std::string* v = step.attribute("value");
     if (!v) throw SceneError(step.where, "<matrix> needs a 'value' attribute");
-    std::vector<float> values;
-    std::string token;
-    for (char c : *v + " ") {
-      if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
-        if (!token.empty())
-          values.push_back(float(std::get<double>(parse_value_text(ValueKind::Float, token, step.where).value)));
-        token.clear();
-      } else {
-        token += c;
-      }
-    }
+    const std::vector<double> values = numbers(*v, step.where);
     Matrix4 m = Matrix4::identity();
     if (values.size() != 16)
       throw SceneError(step.where, "<matrix> needs 16 numbers (row-major 4x4), found " + std::to_string(values.size()));
@@ -67,7 +77,7 @@ Transform parse_step(const XmlNode& step) {
   }
   if (step.tag == "lookat") {
     step.check_attributes({"origin", "target", "up"});
-    const Vec3 up = step.attribute("up") ? triple(step, "up") : Vec3(0, 1, 0);
+    const Vec3d up = step.attribute("up") ? triple(step, "up") : Vec3d(0, 1, 0);
     return Transform::look_at(triple(step, "origin"), triple(step, "target"), up);
   }
   throw SceneError(step.where,

@@ -19,8 +19,8 @@ Matrix4 Matrix4::operator*(const Matrix4& o) const {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       double sum = 0;
-      for (int k = 0; k < 4; ++k) sum += double(m[i][k]) * o.m[k][j];
-      r.m[i][j] = float(sum);
+      for (int k = 0; k < 4; ++k) sum += m[i][k] * o.m[k][j];
+      r.m[i][j] = sum;
     }
   return r;
 }
@@ -33,8 +33,7 @@ Matrix4 Matrix4::transposed() const {
 }
 
 bool Matrix4::inverse(Matrix4& out) const {
-  // Gauss-Jordan elimination with partial pivoting, in double precision so
-  // that scenes with huge or tiny scales keep an accurate inverse.
+  // Gauss-Jordan elimination with partial pivoting.
   double a[4][8];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -57,8 +56,9 @@ bool Matrix4::inverse(Matrix4& out) const {
   }
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      out.m[i][j] = float(a[i][j + 4]);
-      if (!std::isfinite(out.m[i][j])) return false;  // numerically singular
+      out.m[i][j] = a[i][j + 4];
+      // Numerically singular: its inverse would not fit the floats it is applied to.
+      if (!(std::abs(out.m[i][j]) < 1e38)) return false;
     }
   return true;
 }
@@ -67,7 +67,7 @@ Transform::Transform(const Matrix4& m) : m_(m) {
   if (!m.inverse(inv_)) throw std::invalid_argument("transform matrix is singular");
 }
 
-Transform Transform::translate(Vec3 d) {
+Transform Transform::translate(Vec3d d) {
   Matrix4 m = Matrix4::identity(), inv = Matrix4::identity();
   for (int i = 0; i < 3; ++i) {
     m.m[i][3] = d[i];
@@ -76,14 +76,26 @@ Transform Transform::translate(Vec3 d) {
   return {m, inv};
 }
 
-Transform Transform::scale(Vec3 s) {
+namespace {
+
+double length(Vec3d v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+Vec3d normalize(Vec3d v) {
+  const double l = length(v);
+  return {v.x / l, v.y / l, v.z / l};
+}
+Vec3d cross(Vec3d a, Vec3d b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec3d difference(Vec3d a, Vec3d b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+}  // namespace
+
+Transform Transform::scale(Vec3d s) {
   return Transform(Matrix4{{{{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}, {0, 0, 0, 1}}}});
 }
 
-Transform Transform::rotate(Vec3 axis, float degrees) {
-  const Vec3 a = normalize(axis);
-  const float theta = degrees * kPi / 180;
-  const float s = std::sin(theta), c = std::cos(theta);
+Transform Transform::rotate(Vec3d axis, double degrees) {
+  const Vec3d a = normalize(axis);
+  const double theta = degrees * 3.14159265358979323846 / 180;
+  const double s = std::sin(theta), c = std::cos(theta);
   Matrix4 m = Matrix4::identity();
   m.m[0][0] = a.x * a.x + (1 - a.x * a.x) * c;
   m.m[0][1] = a.x * a.y * (1 - c) - a.z * s;
@@ -97,14 +109,13 @@ Transform Transform::rotate(Vec3 axis, float degrees) {
   return {m, m.transposed()};
 }
 
-Transform Transform::look_at(Vec3 origin, Vec3 target, Vec3 up) {
+Transform Transform::look_at(Vec3d origin, Vec3d target, Vec3d up) {
   if (target == origin) throw std::invalid_argument("lookat: origin and target coincide");
-  const Vec3 dir = normalize(target - origin);
-  const Vec3 left = cross(normalize(up), dir);
-  if (!(squared_length(left) > 0))
-    throw std::invalid_argument("lookat: 'up' is zero or parallel to the viewing direction");
-  const Vec3 l = normalize(left);
-  const Vec3 u = cross(dir, l);
+  const Vec3d dir = normalize(difference(target, origin));
+  const Vec3d left = cross(normalize(up), dir);
+  if (!(length(left) > 1e-12)) throw std::invalid_argument("lookat: 'up' is zero or parallel to the viewing direction");
+  const Vec3d l = normalize(left);
+  const Vec3d u = cross(dir, l);
   Matrix4 m = Matrix4::identity();
   for (int i = 0; i < 3; ++i) {
     m.m[i][0] = l[i];
@@ -115,30 +126,37 @@ Transform Transform::look_at(Vec3 origin, Vec3 target, Vec3 up) {
   return Transform(m);
 }
 
-Vec3 Transform::point(Vec3 p) const {
-  Vec3 r;
+Vec3d Transform::point_double(Vec3d p) const {
+  double r[3];
   for (int i = 0; i < 3; ++i) r[i] = m_.m[i][0] * p.x + m_.m[i][1] * p.y + m_.m[i][2] * p.z + m_.m[i][3];
-  const float w = m_.m[3][0] * p.x + m_.m[3][1] * p.y + m_.m[3][2] * p.z + m_.m[3][3];
-  return w == 1 ? r : r / w;
+  const double w = m_.m[3][0] * p.x + m_.m[3][1] * p.y + m_.m[3][2] * p.z + m_.m[3][3];
+  return w == 1 ? Vec3d(r[0], r[1], r[2]) : Vec3d(r[0] / w, r[1] / w, r[2] / w);
+}
+
+Vec3 Transform::point(Vec3 p) const {
+  const Vec3d r = point_double(Vec3d(p));
+  return {float(r.x), float(r.y), float(r.z)};
 }
 
 Vec3 Transform::point_error(Vec3 p) const {
+  // Rounding the double result to float dominates; gamma(3) of the terms'
+  // magnitudes bounds it with room to spare.
   Vec3 e;
   for (int i = 0; i < 3; ++i)
-    e[i] = gamma(3) * (std::abs(m_.m[i][0] * p.x) + std::abs(m_.m[i][1] * p.y) + std::abs(m_.m[i][2] * p.z) +
-                       std::abs(m_.m[i][3]));
+    e[i] = gamma(3) * float(std::abs(m_.m[i][0] * p.x) + std::abs(m_.m[i][1] * p.y) + std::abs(m_.m[i][2] * p.z) +
+                            std::abs(m_.m[i][3]));
   return e;
 }
 
 Vec3 Transform::vector(Vec3 v) const {
   Vec3 r;
-  for (int i = 0; i < 3; ++i) r[i] = m_.m[i][0] * v.x + m_.m[i][1] * v.y + m_.m[i][2] * v.z;
+  for (int i = 0; i < 3; ++i) r[i] = float(m_.m[i][0] * v.x + m_.m[i][1] * v.y + m_.m[i][2] * v.z);
   return r;
 }
 
 Vec3 Transform::normal(Vec3 n) const {
   Vec3 r;
-  for (int i = 0; i < 3; ++i) r[i] = inv_.m[0][i] * n.x + inv_.m[1][i] * n.y + inv_.m[2][i] * n.z;
+  for (int i = 0; i < 3; ++i) r[i] = float(inv_.m[0][i] * n.x + inv_.m[1][i] * n.y + inv_.m[2][i] * n.z);
   return r;
 }
 

@@ -152,7 +152,9 @@ Vec3 Properties::get_vector(const std::string& name) const {
 }
 
 Transform Properties::get_transform(const std::string& name) const {
-  return std::get<Transform>(value(name, ParamType::Transform).value);
+  const Transform t = std::get<Transform>(value(name, ParamType::Transform).value);
+  if (name != "to_world" || render_origin_ == Vec3d()) return t;
+  return Transform::translate(-render_origin_) * t;
 }
 
 }  // namespace caustica

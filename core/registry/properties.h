@@ -45,6 +45,8 @@ class Properties {
   Color get_color(const std::string& name) const;
   Vec3 get_point(const std::string& name) const;
   Vec3 get_vector(const std::string& name) const;
+  // A `to_world` comes back mapping into render space: world space moved so
+  // that set_render_origin()'s point (the camera) is its origin.
   Transform get_transform(const std::string& name) const;
 
   template <class T>
@@ -80,6 +82,7 @@ class Properties {
   // set_warnings() named (the loader's), else to standard error.
   void warn(const std::string& name, const std::string& problem) const;
   void set_warnings(std::vector<std::string>* warnings) { warnings_ = warnings; }
+  void set_render_origin(Vec3d origin) { render_origin_ = origin; }
 
  private:
   const PropertyValue* find(const std::string& name) const;
@@ -90,6 +93,7 @@ class Properties {
   std::vector<std::pair<ObjectValue, SourceLocation>> children_;
   mutable std::vector<std::pair<std::string, std::string>> read_;  // effective values, as the getters returned them
   std::vector<std::string>* warnings_ = nullptr;
+  Vec3d render_origin_;
   void record(const std::string& name, std::string value) const;
 };
 

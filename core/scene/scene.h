@@ -11,6 +11,7 @@
 #include "core/geometry/ray_log.h"
 #include "core/lights/emitter.h"
 #include "core/lights/light_selection.h"
+#include "core/math/transform.h"
 #include "core/scene/embree_scene.h"
 #include "core/scene/scene_features.h"
 #include "core/shapes/shape.h"
@@ -52,6 +53,16 @@ class Scene {
   // What the scene calls for (analyze_scene), set by the loader.
   const SceneFeatures& features() const { return features_; }
   void set_features(SceneFeatures features) { features_ = std::move(features); }
+  // The world-space point that is the origin of the space the scene is
+  // stored and rendered in (the camera's position).
+  Vec3d render_origin() const { return render_origin_; }
+  Vec3 render_point(Vec3d world) const {
+    return {float(world.x - render_origin_.x), float(world.y - render_origin_.y), float(world.z - render_origin_.z)};
+  }
+  Vec3d world_point(Vec3 render) const {
+    return {render.x + render_origin_.x, render.y + render_origin_.y, render.z + render_origin_.z};
+  }
+  void set_render_origin(Vec3d origin) { render_origin_ = origin; }
   const std::string& source() const { return source_; }
 
  private:
@@ -62,6 +73,7 @@ class Scene {
   std::string source_;
   Bounds3 bounds_;
   SceneFeatures features_;
+  Vec3d render_origin_;
   std::unique_ptr<EmbreeScene> accel_;
   std::unique_ptr<LightSelection> lights_;
   mutable tbb::enumerable_thread_specific<uint64_t> rays_traced_{0};

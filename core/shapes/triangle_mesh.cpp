@@ -14,7 +14,12 @@ std::vector<ParamSpec> mesh_shape_params() {
 }
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Properties& props, std::string kind)
-    : TriangleMesh(std::move(mesh), props.get_transform("to_world"), props.get_bool("flip_normals"), std::move(kind)) {}
+    : TriangleMesh(std::move(mesh), props.get_transform("to_world"), props.get_bool("flip_normals"), std::move(kind)) {
+  if (collapsed_ > 0)
+    props.warn("to_world", std::to_string(collapsed_) +
+                               " triangles collapse to lines or points once stored in float relative to the camera: "
+                               "they are finer than float's spacing at their distance");
+}
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_normals, std::string kind)
     : mesh_(std::move(mesh)), flip_normals_(flip_normals), kind_(std::move(kind)) {
@@ -23,7 +28,15 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
       throw std::invalid_argument(kind_ + " mesh: vertex index " + std::to_string(index) + " is out of range (" +
                                   std::to_string(mesh_.positions.size()) + " vertices)");
   if (mesh_.indices.size() % 3 != 0) throw std::invalid_argument(kind_ + " mesh: indices do not form triangles");
+  const auto area2 = [&](size_t i) {
+    const Vec3 p0 = mesh_.positions[mesh_.indices[i]], p1 = mesh_.positions[mesh_.indices[i + 1]],
+               p2 = mesh_.positions[mesh_.indices[i + 2]];
+    return squared_length(cross(p1 - p0, p2 - p0));
+  };
+  std::vector<bool> had_area(triangle_count());
+  for (size_t i = 0; i < mesh_.indices.size(); i += 3) had_area[i / 3] = area2(i) > 0;
   for (Vec3& p : mesh_.positions) p = to_world.point(p);
+  for (size_t i = 0; i < mesh_.indices.size(); i += 3) collapsed_ += had_area[i / 3] && !(area2(i) > 0);
   for (Vec3& n : mesh_.normals) n = normalize(to_world.normal(n));
   // Embree reads each vertex with a 16-byte load; the spare capacity keeps
   // the last one's read inside the allocation.

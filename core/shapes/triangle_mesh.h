@@ -36,12 +36,15 @@ class TriangleMesh : public Shape {
   PositionSample sample_position(Vec2 u) const override;
   std::string kind() const override { return kind_; }
   size_t triangle_count() const { return mesh_.indices.size() / 3; }
+  // Triangles with an area in the mesh's own space and none once stored.
+  size_t collapsed_triangles() const { return collapsed_; }
 
  private:
   MeshData mesh_;
   bool flip_normals_;
   std::string kind_;
   float area_ = 0;
+  size_t collapsed_ = 0;
   std::optional<DiscreteDistribution> area_distribution_;
 };
 

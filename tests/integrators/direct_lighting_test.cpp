@@ -96,8 +96,11 @@ double pixel_expectation(const Scene& scene, int x, int y) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Ray ray = scene.sensor().generate_ray({x + (i + 0.5f) / n, y + (j + 0.5f) / n}, {0.5f, 0.5f});
-      const float t = -ray.o.z / ray.d.z;
-      const Vec3 p = ray.o + ray.d * t;
+      // The plane is z = 0 in the world; the ray starts at the camera, the
+      // origin of render space.
+      const Vec3d o = scene.world_point(ray.o);
+      const double t = -o.z / ray.d.z;
+      const Vec3d p{o.x + ray.d.x * t, o.y + ray.d.y * t, 0};
       const double d = std::sqrt(p.x * p.x + p.y * p.y + kHeight * kHeight);
       sum += kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
     }

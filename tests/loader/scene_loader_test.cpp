@@ -84,7 +84,7 @@ TEST(SceneLoader, EveryElementOfTheSubset) {
   EXPECT_NE(scene->shapes()[2]->emitter(), nullptr);
   // The floor's centre (0.2764, 0, 0.2796) after the scale, a rotation by 30
   // degrees about y and the move along x.
-  const auto hit = scene->intersect({{1.3792f, 1, 0.1039f}, {0, -1, 0}});
+  const auto hit = scene->intersect({scene->render_point({1.3792, 1, 0.1039}), {0, -1, 0}});
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->t, 1, 1e-5f);
 }
@@ -350,6 +350,22 @@ TEST(SceneLoader, WarningsNameTheFileAndLine) {
       "<integer name='width' value='$res'/></film></sensor></scene>",
       "used.xml", {{"res", "16"}});
   EXPECT_TRUE(used.warnings.empty());
+}
+
+// Stored relative to the camera, a small rectangle far from it is finer
+// than float's spacing there: said, not rendered wrong silently.
+TEST(SceneLoader, GeometryFinerThanFloatAtItsDistanceIsReported) {
+  const auto shape = [](const char* distance) {
+    return std::string(
+               "<scene version='3.0.0'><shape type='rectangle'><transform name='to_world'>"
+               "<scale value='1e-4'/><translate x='") +
+           distance + "'/></transform></shape></scene>";
+  };
+  EXPECT_THAT(
+      test::scene_from_xml(shape("1e4")).warnings,
+      testing::ElementsAre(HasSubstr("test.xml:1: parameter 'to_world' of shape 'rectangle': 2 triangles "
+                                     "collapse to lines or points once stored in float relative to the camera")));
+  EXPECT_TRUE(test::scene_from_xml(shape("10")).warnings.empty());
 }
 
 // A file of a few bytes can declare a gigapixel image; it is refused before

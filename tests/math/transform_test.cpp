@@ -53,6 +53,17 @@ TEST(Transform, InverseIsAccurateAtHugeScale) {
   expect_near(t.inverse().point(t.point({0.25f, 0.5f, -0.75f})), {0.25f, 0.5f, -0.75f}, 1e-3f);
 }
 
+// Composed in double, a far translation and its way back keep a small
+// offset exactly; in float, 1e7 + 0.3 would already have lost it.
+TEST(Transform, ComposesInDoubleBeforeRoundingToFloat) {
+  const Transform there = Transform::scale({1e-3, 1e-3, 1e-3});
+  const Transform moved = Transform::translate({-12345678.9, 0, 0}) * Transform::translate({12345678.9, 0, 0}) * there;
+  EXPECT_EQ(moved.point(Vec3(300, 0, 0)).x, 0.3f);
+  EXPECT_EQ(moved.point_double({0.1, 0, 0}).x, 1e-4);
+  const Transform camera = Transform::look_at({1e7 + 0.5, 2, 3}, {1e7 + 0.5, 2, 4}, {0, 1, 0});
+  EXPECT_EQ(camera.point_double({0, 0, 0}).x, 1e7 + 0.5);
+}
+
 TEST(Frame, IsOrthonormalForEveryNormal) {
   for (Vec3 n :
        {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), normalize(Vec3(1, 2, -3)), normalize(Vec3(1e-8f, 0, -1))}) {

@@ -1,8 +1,10 @@
 #include "tests/support/independent_runs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/bsdf/bsdf.h"
+#include "core/image/image_input.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica::test {
@@ -59,6 +61,33 @@ bool seen_through_delta(const Scene& scene, const Region& g) {
           if (si && (si->shape->bsdf()->lobes() & kDelta)) return true;
         }
   return false;
+}
+
+std::vector<RegionEstimate> reference_regions(const std::string& name, const std::vector<Region>& regions) {
+  const Image ref = read_image(std::string(CAUSTICA_SOURCE_DIR) + "/tests/data/references/" + name + ".exr");
+  const auto channel = [&](const std::string& c) {
+    return size_t(std::find(ref.channels.begin(), ref.channels.end(), c) - ref.channels.begin());
+  };
+  const size_t nc = ref.channels.size();
+  const size_t rgb[3] = {channel("R"), channel("G"), channel("B")};
+  const size_t var[3] = {channel("variance.R"), channel("variance.G"), channel("variance.B")};
+  std::vector<RegionEstimate> out;
+  for (const Region& g : regions) {
+    double sum = 0, variance = 0;
+    for (int y = g.lo.y; y < g.hi.y; ++y)
+      for (int x = g.lo.x; x < g.hi.x; ++x) {
+        const float* p = &ref.pixels[(size_t(y) * ref.width + x) * nc];
+        double sigma = 0;
+        for (int c = 0; c < 3; ++c) {
+          sum += p[rgb[c]];
+          sigma += std::sqrt(p[var[c]]);
+        }
+        variance += sigma * sigma / 9;
+      }
+    const double n = double(g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
+    out.push_back({sum / (3 * n), std::sqrt(variance) / n, 0});
+  }
+  return out;
 }
 
 double difference_score(const RegionEstimate& a, const RegionEstimate& b) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/loader/scene_loader.h"
@@ -33,6 +34,12 @@ std::vector<RegionEstimate> estimate_regions(const LoadedScene& scene, const std
 // meets a surface with a delta lobe: light paths cannot reach a pinhole
 // through such a surface, so light tracing leaves these regions dark.
 bool seen_through_delta(const Scene& scene, const Region& region);
+
+// The region means of the stored path reference of scenes/NAME.xml
+// (tests/data/references, 24x24) and their standard errors from its
+// per-pixel variance layers (taking its channels as fully correlated, an
+// upper bound).
+std::vector<RegionEstimate> reference_regions(const std::string& name, const std::vector<Region>& regions);
 
 // (a - b) / sqrt(se_a^2 + se_b^2), for a two-sample test; a small relative
 // rounding spread keeps noise-free estimates comparable.

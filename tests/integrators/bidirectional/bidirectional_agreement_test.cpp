@@ -38,40 +38,12 @@ struct Integrator {
 const Integrator kIntegrators[] = {{"ptracer", 64}, {"bdpt", 8}};
 constexpr int kTests = int(std::size(kScenes) * std::size(kIntegrators)) * kRegionsPerSide * kRegionsPerSide;
 
-// Region means of the reference and their standard errors.
-std::vector<test::RegionEstimate> reference_regions(const std::string& name, const std::vector<test::Region>& regions) {
-  const Image ref = read_image(std::string(CAUSTICA_SOURCE_DIR) + "/tests/data/references/" + name + ".exr");
-  const auto channel = [&](const std::string& c) {
-    return size_t(std::find(ref.channels.begin(), ref.channels.end(), c) - ref.channels.begin());
-  };
-  const size_t nc = ref.channels.size();
-  const size_t rgb[3] = {channel("R"), channel("G"), channel("B")};
-  const size_t var[3] = {channel("variance.R"), channel("variance.G"), channel("variance.B")};
-  std::vector<test::RegionEstimate> out;
-  for (const test::Region& g : regions) {
-    double sum = 0, variance = 0;
-    for (int y = g.lo.y; y < g.hi.y; ++y)
-      for (int x = g.lo.x; x < g.hi.x; ++x) {
-        const float* p = &ref.pixels[(size_t(y) * kRes + x) * nc];
-        double sigma = 0;
-        for (int c = 0; c < 3; ++c) {
-          sum += p[rgb[c]];
-          sigma += std::sqrt(p[var[c]]);
-        }
-        variance += sigma * sigma / 9;
-      }
-    const double n = double(g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
-    out.push_back({sum / (3 * n), std::sqrt(variance) / n, 0});
-  }
-  return out;
-}
-
 class BidirectionalAgreement : public testing::TestWithParam<const char*> {};
 
 TEST_P(BidirectionalAgreement, RegionMeansMatchPath) {
   const std::string name = GetParam();
   const auto regions = test::grid_regions(kRes, kRes, kRegionsPerSide);
-  const auto reference = reference_regions(name, regions);
+  const auto reference = test::reference_regions(name, regions);
   const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, kTests), kRuns - 1);
   for (const Integrator& integrator : kIntegrators) {
     const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml",
