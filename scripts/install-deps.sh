@@ -10,6 +10,8 @@ packages=(
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libpugixml-dev libassimp-dev libfmt-dev
+  # tests/fuzz: libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer
+  clang libclang-rt-14-dev
   # bench/: the convergence suite reads EXRs and plots from Python
   python3 python3-numpy python3-matplotlib python3-openimageio
 )

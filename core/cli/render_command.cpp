@@ -14,16 +14,6 @@
 
 namespace caustica {
 
-std::map<std::string, std::string> parse_defines(const std::vector<std::string>& items) {
-  std::map<std::string, std::string> out;
-  for (const std::string& item : items) {
-    const size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) throw std::invalid_argument("-D expects name=value, got '" + item + "'");
-    out[item.substr(0, eq)] = item.substr(eq + 1);
-  }
-  return out;
-}
-
 void RenderCommand::add_to(CLI::App& app) {
   command_ = app.add_subcommand("render", "render a scene to OUT.exr (linear) and OUT.png (display)");
   command_->add_option("scene", scene_, "Mitsuba 3 scene file")->required()->check(CLI::ExistingFile);

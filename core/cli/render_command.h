@@ -30,7 +30,4 @@ class RenderCommand {
   DevelopOptions develop_;
 };
 
-// Parses "-D name=value" items into a map; throws on a missing '='.
-std::map<std::string, std::string> parse_defines(const std::vector<std::string>& items);
-
 }  // namespace caustica

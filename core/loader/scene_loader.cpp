@@ -253,6 +253,17 @@ LoadedScene load_scene_string(std::string_view xml, const std::filesystem::path&
   return instantiate(root, file_for_messages.string(), unused);
 }
 
+Defines parse_defines(const std::vector<std::string>& items) {
+  Defines out;
+  for (const std::string& item : items) {
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw std::invalid_argument(shorten_quoted("-D expects name=value, got '" + item + "'"));
+    out[item.substr(0, eq)] = item.substr(eq + 1);
+  }
+  return out;
+}
+
 std::shared_ptr<Integrator> make_integrator(const std::string& spec, const GivenValues& inherited) {
   const size_t colon = spec.find(':');
   const std::string name = spec.substr(0, colon);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/color/tone_operator.h"
 #include "core/registry/property_value.h"
@@ -14,6 +15,9 @@
 namespace caustica {
 
 using Defines = std::map<std::string, std::string>;
+
+// -D values, each "name=value", as the command line gives them.
+Defines parse_defines(const std::vector<std::string>& items);
 
 // Parameter values as a scene file gave them, in order.
 using GivenValues = std::vector<std::pair<std::string, PropertyValue>>;

@@ -12,10 +12,12 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "core/errors/interrupted.h"
 #include "core/registry/properties.h"
 #include "core/shapes/ply_reader.h"
 #include "core/shapes/triangle_mesh.h"
@@ -30,10 +32,18 @@ std::filesystem::path mesh_file(const Properties& props) {
   return file;
 }
 
+// Lets a stop request end Assimp's import at its next progress report.
+class StopOnRequest final : public Assimp::ProgressHandler {
+ public:
+  bool Update(float) override { return !stop_request().load(); }
+};
+
 MeshData read_obj_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
   const std::filesystem::path file = mesh_file(props);
   Assimp::Importer importer;
+  importer.SetProgressHandler(new StopOnRequest);  // the importer owns it
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
+  if (stop_request().load()) throw Interrupted("interrupted");
   if (!scene)
     throw props.error("filename", "cannot read mesh file '" + file.string() + "': " + importer.GetErrorString());
 
