@@ -305,13 +305,19 @@ MeshData read_ply(std::string_view bytes) {
   MeshData mesh;
   std::optional<uint64_t> vertex_count;
   for (const Element& element : header.elements)
-    if (element.name == "vertex") vertex_count = element.count;
+    if (element.name == "vertex") {
+      if (vertex_count) throw PlyError("the file has two vertex elements");
+      vertex_count = element.count;
+    }
   if (!vertex_count) throw PlyError("the file has no vertex element");
   if (*vertex_count > std::numeric_limits<uint32_t>::max())
     throw PlyError("the file declares " + std::to_string(*vertex_count) + " vertices, more than 2^32 - 1");
 
   for (const Element& element : header.elements) {
-    if (element.properties.empty()) continue;
+    const bool is_vertex = element.name == "vertex";
+    const bool is_face = element.name == "face";
+    if (element.properties.empty() && !is_vertex) continue;
+    const VertexLayout layout = is_vertex ? vertex_layout(element) : VertexLayout{};
     // Each item holds at least one value per property; the smallest type
     // bounds how many values fit.
     Type smallest = Type::Float64;
@@ -322,12 +328,8 @@ MeshData read_ply(std::string_view bytes) {
       throw body.error("element '" + excerpt(element.name) + "' declares " + std::to_string(element.count) +
                        " items, more than the " + std::to_string(body.remaining()) + " bytes left can hold");
 
-    const bool is_vertex = element.name == "vertex";
-    const bool is_face = element.name == "face";
-    VertexLayout layout;
     int face_list = -1;
     if (is_vertex) {
-      layout = vertex_layout(element);
       mesh.positions.reserve(element.count);
       if (complete(layout.normal)) mesh.normals.reserve(element.count);
       if (complete(layout.uv)) mesh.uvs.reserve(element.count);

@@ -102,6 +102,8 @@ TEST(PlyReader, BadFilesGetErrorsNamingWhereAndWhy) {
       {"ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n",
        "line 4: a list's count must have an integer type"},
       {"ply\nformat ascii 1.0\nend_header\n", "the file has no vertex element"},
+      {"ply\nformat ascii 1.0\nelement vertex 0\nelement vertex 0\nend_header\n", "the file has two vertex elements"},
+      {"ply\nformat ascii 1.0\nelement vertex 3\nend_header\n", "the vertex element has no x, y and z properties"},
       {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n",
        "the vertex element has no x, y and z properties"},
       {"ply\nformat ascii 1.0\nelement vertex 5000000000\nproperty float x\nend_header\n",
