@@ -92,7 +92,11 @@ int RenderCommand::run() const {
   const Developer developer = develop_.make(job.scene().tone_operator);
 
   const std::string plan = job.plan();
-  if (!quiet_ && !plan.empty()) std::printf("%s\n", plan.c_str());
+  if (!quiet_ && !plan.empty()) {
+    std::printf("%s\n", plan.c_str());
+    // The line that says loading is over, for whoever reads a pipe.
+    std::fflush(stdout);
+  }
   RenderProgress progress;
   std::optional<RenderResult> result;
   {

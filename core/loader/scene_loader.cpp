@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
+#include "core/errors/interrupted.h"
 #include "core/lights/emitter.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
@@ -112,6 +113,8 @@ class Instantiator {
     try {
       plugin = info->create(props);
     } catch (const SceneError&) {
+      throw;
+    } catch (const Interrupted&) {
       throw;
     } catch (const std::exception& e) {
       throw SceneError(node.where, node.tag + " '" + type + "': " + e.what());

@@ -155,16 +155,21 @@ TEST(TonemapCommand, RedevelopsWithoutRendering) {
 }
 
 // Starts a render of `scene` at 32x32 with `args`, sends `signal` once it
-// is going, and returns the spp its EXR records, after checking the file is
-// a whole image marked interrupted whose every pixel holds that many samples.
+// is rendering, and returns the spp its EXR records, after checking the
+// file is a whole image marked interrupted whose every pixel holds that
+// many samples.
 int interrupted_render(int signal, const std::string& scene, const std::string& name, std::vector<std::string> args) {
   const auto exr = temp_dir() / name;
   std::filesystem::remove(exr);
+  int out[2];
+  if (pipe(out) != 0) return -1;
   const pid_t pid = fork();
   if (pid < 0) return -1;
   if (pid == 0) {
-    std::vector<std::string> words = {CAUSTICA_BINARY, "render", scene, "-o" + exr.string(), "-D", "res=32",
-                                      "--threads",     "1",      "-q"};
+    dup2(out[1], STDOUT_FILENO);
+    close(out[0]);
+    std::vector<std::string> words = {CAUSTICA_BINARY, "render",    scene, "-o" + exr.string(), "-D",
+                                      "res=32",        "--threads", "1"};
     words.insert(words.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
@@ -172,10 +177,20 @@ int interrupted_render(int signal, const std::string& scene, const std::string& 
     execv(CAUSTICA_BINARY, argv.data());
     _exit(127);
   }
-  // Whenever it arrives, the signal ends the render long before it would
-  // end by itself; the pause only lets it get going.
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  close(out[1]);
+  // The plan's line comes once the scene is loaded (a stop during a mesh
+  // load ends the run without an image, by design); the pause then lets
+  // the render get going, and whenever the signal arrives it ends the
+  // render long before it would end by itself.
+  char c = 0;
+  while (read(out[0], &c, 1) == 1 && c != '\n') {
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   kill(pid, signal);
+  // Read on to the end: a closed pipe would end the run with SIGPIPE.
+  while (read(out[0], &c, 1) == 1) {
+  }
+  close(out[0]);
   int status = 0;
   waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status));

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/bsdf/bsdf.h"
+#include "core/errors/interrupted.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -376,6 +377,16 @@ TEST(SceneLoader, TexturesDeclaringHugeSizesAreRefused) {
                                "name='reflectance'><string name='filename' value='" +
                                ppm.string() + "'/></texture></bsdf></scene>"),
               HasSubstr("': its size 60000x60000 exceeds the limit of 65536 pixels a side and 2^28 pixels in all"));
+}
+
+// A stop request during a mesh load ends the load as an interruption, not
+// as an error in the scene.
+TEST(SceneLoader, AStopDuringAMeshLoadIsAnInterruption) {
+  stop_request().store(true);
+  EXPECT_THROW(test::scene_from_xml("<scene version='3.0.0'><shape type='obj'><string name='filename' value='" +
+                                    kCornellMeshes + "floor.obj'/></shape></scene>"),
+               Interrupted);
+  stop_request().store(false);
 }
 
 // A face index beyond the vertices (or negative, read as a huge unsigned
