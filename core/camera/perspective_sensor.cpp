@@ -28,6 +28,7 @@ class PerspectiveSensor final : public Sensor {
  public:
   explicit PerspectiveSensor(const Properties& props)
       : to_world_(props.get_transform("to_world")),
+        to_camera_(to_world_.inverse()),
         near_(props.get_float("near_clip")),
         far_(props.get_float("far_clip")) {
     set_film_and_sampler(child_or_default<Film>(props, "film", "hdrfilm"),
@@ -87,6 +88,8 @@ class PerspectiveSensor final : public Sensor {
     *pdf_dir = 1 / (image_plane_area_ * cos_theta * cos_theta * cos_theta);
   }
 
+  ClipPlanes clip_planes() const override { return {origin_, forward_, near_, far_}; }
+
   std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2) const override {
     Vec3 wi = origin_ - ref.p;
     const float dist2 = squared_length(wi);
@@ -104,7 +107,7 @@ class PerspectiveSensor final : public Sensor {
 
  private:
   bool to_raster(Vec3 d_world, Vec2* raster) const {
-    const Vec3 local = to_world_.inverse().vector(d_world);
+    const Vec3 local = to_camera_.vector(d_world);
     if (local.z <= 0) return false;
     const float x = local.x / local.z, y = local.y / local.z;
     raster->x = (1 - x / tan_x_) * 0.5f * film()->width();
@@ -112,7 +115,7 @@ class PerspectiveSensor final : public Sensor {
     return raster->x >= 0 && raster->x < film()->width() && raster->y >= 0 && raster->y < film()->height();
   }
 
-  Transform to_world_;
+  Transform to_world_, to_camera_;
   float near_, far_;
   float tan_x_ = 1, tan_y_ = 1;
   Vec3 origin_, forward_;

@@ -22,6 +22,13 @@ struct WiSample {
   Vec2 raster;  // where the connection lands on the film, in pixels
 };
 
+// The slab a camera sees: depths along `forward`, measured from `position`
+// (render space), between near_clip and far_clip.
+struct ClipPlanes {
+  Vec3 position, forward;
+  float near_clip = 0, far_clip = 0;
+};
+
 // A camera. Raster coordinates run over [0, width] x [0, height] in pixels,
 // y downward; the importance We is normalised so that one sample per pixel
 // of a light path splatted at its raster position estimates the pixel.
@@ -35,6 +42,7 @@ class Sensor : public Plugin {
   virtual Color We(const Ray& ray, Vec2* raster) const = 0;
   virtual void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const = 0;
   virtual std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2 u) const = 0;
+  virtual ClipPlanes clip_planes() const = 0;
 
   const std::shared_ptr<Film>& film() const { return film_; }
   const std::shared_ptr<Sampler>& sampler() const { return sampler_; }

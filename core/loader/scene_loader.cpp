@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
+#include "core/camera/clip_check.h"
 #include "core/errors/interrupted.h"
 #include "core/lights/emitter.h"
 #include "core/loader/transform_parser.h"
@@ -36,7 +37,7 @@ PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
       const std::string* v = node.attribute(a);
       return v ? std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value) : 0.0;
     };
-    return {kind, Vec3(float(coord("x")), float(coord("y")), float(coord("z"))), node.where};
+    return {kind, Vec3d(coord("x"), coord("y"), coord("z")), node.where};
   }
   node.check_attributes({"name", "value"});
   const std::string& text = required_attribute(node, "value");
@@ -235,6 +236,8 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);
   scene->set_features(analyze_scene(*scene, inst.textures > 0));
+  if (auto warning = clip_warning(scene->sensor().clip_planes(), scene->bounds()))
+    inst.warnings.push_back(source + ": " + *warning);
   for (const std::string& name : unused_defines)
     inst.warnings.push_back(source + ": -D " + name + " is not used by the scene (no $" + name + " in it)");
   return {std::move(scene), std::move(integrator), std::move(inst.integrator_values), std::move(tone_operator),

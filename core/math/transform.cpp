@@ -133,8 +133,8 @@ Vec3d Transform::point_double(Vec3d p) const {
   return w == 1 ? Vec3d(r[0], r[1], r[2]) : Vec3d(r[0] / w, r[1] / w, r[2] / w);
 }
 
-Vec3 Transform::point(Vec3 p) const {
-  const Vec3d r = point_double(Vec3d(p));
+Vec3 Transform::point(Vec3d p) const {
+  const Vec3d r = point_double(p);
   return {float(r.x), float(r.y), float(r.z)};
 }
 

@@ -49,7 +49,7 @@ class Transform {
   Transform inverse() const { return {inv_, m_}; }
 
   // Computed in double, rounded once to float.
-  Vec3 point(Vec3 p) const;
+  Vec3 point(Vec3d p) const;
   Vec3d point_double(Vec3d p) const;
   Vec3 vector(Vec3 v) const;
   // Normals transform by the inverse transpose; the result is not normalised.

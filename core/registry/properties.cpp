@@ -143,12 +143,13 @@ std::filesystem::path Properties::get_path(const std::string& name) const {
 
 Color Properties::get_color(const std::string& name) const { return as_color(value(name, ParamType::Color)); }
 
-Vec3 Properties::get_point(const std::string& name) const {
-  return std::get<Vec3>(value(name, ParamType::Point).value);
+Vec3d Properties::get_point(const std::string& name) const {
+  return std::get<Vec3d>(value(name, ParamType::Point).value);
 }
 
 Vec3 Properties::get_vector(const std::string& name) const {
-  return std::get<Vec3>(value(name, ParamType::Vector).value);
+  const Vec3d v = std::get<Vec3d>(value(name, ParamType::Vector).value);
+  return {float(v.x), float(v.y), float(v.z)};
 }
 
 Transform Properties::get_transform(const std::string& name) const {

@@ -43,7 +43,9 @@ class Properties {
   // A string naming a file, resolved against the folder of the scene file it was written in.
   std::filesystem::path get_path(const std::string& name) const;
   Color get_color(const std::string& name) const;
-  Vec3 get_point(const std::string& name) const;
+  // In double: a point far from the origin keeps its precision until
+  // get_transform("to_world") has moved it next to the camera.
+  Vec3d get_point(const std::string& name) const;
   Vec3 get_vector(const std::string& name) const;
   // A `to_world` comes back mapping into render space: world space moved so
   // that set_render_origin()'s point (the camera) is its origin.

@@ -95,7 +95,7 @@ PropertyValue parse_value_text(ValueKind kind, const std::string& text, const So
       const auto n = parse_numbers(text, where, to_string(kind));
       if (n.size() != 3)
         throw SceneError(where, "cannot parse '" + text + "' as " + to_string(kind) + " (expected 3 numbers)");
-      v.value = Vec3(float(n[0]), float(n[1]), float(n[2]));
+      v.value = Vec3d(n[0], n[1], n[2]);
       break;
     }
     case ValueKind::Transform:

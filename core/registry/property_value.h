@@ -25,7 +25,7 @@ struct ObjectValue {
 // One named value given to a plugin, with where it was written.
 struct PropertyValue {
   ValueKind kind = ValueKind::Float;
-  std::variant<bool, int64_t, double, std::string, Color, Vec3, Transform, ObjectValue> value;
+  std::variant<bool, int64_t, double, std::string, Color, Vec3d, Transform, ObjectValue> value;
   SourceLocation where;
 };
 

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "core/registry/properties.h"
 #include "core/render/pixel_integrator.h"
@@ -173,6 +174,34 @@ TEST(DirectLighting, PointLightIsExact) {
     const auto [mean, se] = estimate(scene, p[0], p[1], 16);
     EXPECT_NEAR(mean, expected, 1e-5 * expected);
     EXPECT_LT(se, 1e-6);
+  }
+}
+
+// The same far from the origin, where float's spacing is 1: the light's
+// position, written as a <point> with a fractional offset, keeps it, since
+// points are read in double and moved next to the camera before rounding.
+TEST(DirectLighting, PointLightFarFromTheOriginIsExact) {
+  const double far = 1e7, lx = far + 0.3, ly = far - 0.2;
+  char position[160];
+  std::snprintf(position, sizeof position, "<point name='position' x='%.17g' y='%.17g' z='1'/>", lx, ly);
+  const std::string shift = "<translate x='" + std::to_string(far) + "' y='" + std::to_string(far) + "'/>";
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='direct'/>"
+      "<sensor type='perspective'><transform name='to_world'><lookat origin='0, 0, 3' target='0, 0, 0' up='0, 1, 0'/>" +
+      shift +
+      "</transform></sensor>"
+      "<shape type='rectangle'><transform name='to_world'><scale value='10'/>" +
+      shift + "</transform><bsdf type='diffuse'><rgb name='reflectance' value='" + std::to_string(kRho) +
+      "'/></bsdf></shape><emitter type='point'>" + position + "<rgb name='intensity' value='2'/></emitter></scene>");
+  auto s = sampler();
+  float out[3];
+  for (const auto& p : kPoints) {
+    const Vec3 o = scene->render_point({far + p[0], far + p[1], 0.01});
+    sample_along(scene, {o, {0, 0, -1}}, *s, out);
+    const double dx = far + p[0] - lx, dy = far + p[1] - ly;
+    const double d = std::sqrt(dx * dx + dy * dy + 1);
+    const double expected = kRho * 2 / (M_PI * d * d * d);
+    EXPECT_NEAR(out[0], expected, 1e-4 * expected) << "at (" << p[0] << ", " << p[1] << ")";
   }
 }
 

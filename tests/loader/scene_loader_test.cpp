@@ -360,13 +360,36 @@ TEST(SceneLoader, GeometryFinerThanFloatAtItsDistanceIsReported) {
     return std::string(
                "<scene version='3.0.0'><shape type='rectangle'><transform name='to_world'>"
                "<scale value='1e-4'/><translate x='") +
-           distance + "'/></transform></shape></scene>";
+           distance + "' z='" + distance + "'/></transform></shape></scene>";
   };
   EXPECT_THAT(
-      test::scene_from_xml(shape("1e4")).warnings,
+      test::scene_from_xml(shape("5e3")).warnings,
       testing::ElementsAre(HasSubstr("test.xml:1: parameter 'to_world' of shape 'rectangle': 2 triangles "
                                      "collapse to lines or points once stored in float relative to the camera")));
   EXPECT_TRUE(test::scene_from_xml(shape("10")).warnings.empty());
+}
+
+// Mitsuba's default clip distances are absolute, so a scene in other units
+// can lose geometry to them: said, with the depths involved.
+TEST(SceneLoader, ClipPlanesCuttingTheSceneAreReported) {
+  const auto sphere_at = [](const char* depth, const char* radius, const char* sensor_extra = "") {
+    return test::scene_from_xml(std::string("<scene version='3.0.0'><sensor type='perspective'>") + sensor_extra +
+                                "</sensor><shape type='sphere'><point name='center' x='0' y='0' z='" + depth +
+                                "'/><float name='radius' value='" + radius + "'/></shape></scene>")
+        .warnings;
+  };
+  EXPECT_THAT(sphere_at("1e-3", "1e-4"),
+              testing::ElementsAre("test.xml: the whole scene lies nearer to the camera (depth at most 0.0011) than "
+                                   "near_clip (0.01): nothing is seen; set near_clip on the sensor"));
+  EXPECT_THAT(sphere_at("2e5", "1e3"),
+              testing::ElementsAre("test.xml: the scene reaches a depth of 2.01e+05 from the camera, beyond far_clip "
+                                   "(1e+04): what lies beyond is not seen; set far_clip on the sensor"));
+  EXPECT_THAT(sphere_at("1.005", "1"),
+              testing::ElementsAre("test.xml: the scene comes within a depth of 0.005 of the camera, nearer than "
+                                   "near_clip (0.01): what lies nearer is not seen"));
+  EXPECT_TRUE(sphere_at("2e5", "1e3", "<float name='far_clip' value='1e6'/>").empty());
+  EXPECT_TRUE(sphere_at("1e-3", "1e-4", "<float name='near_clip' value='1e-5'/>").empty());
+  EXPECT_TRUE(sphere_at("0", "1").empty());
 }
 
 // A file of a few bytes can declare a gigapixel image; it is refused before
