@@ -1,11 +1,17 @@
-// obj, ply: triangle meshes read from a file (OBJ through Assimp, PLY by
-// caustica's own reader, as Assimp's crashes and hangs on damaged PLY files).
+// obj, ply, serialized: triangle meshes read from a file (OBJ through
+// Assimp; PLY by caustica's own reader, as Assimp crashes and hangs on
+// damaged PLY files; Mitsuba's serialized format through zlib).
 //
-// Polygons are triangulated. A mesh without vertex normals is shaded with
-// its face normals.
+// Polygons are triangulated. A mesh without vertex normals gets smooth
+// ones, as Mitsuba gives it; face_normals (or a serialized mesh's own flag)
+// shades it flat instead.
 //
 //   <shape type="obj">
 //       <string name="filename" value="meshes/bunny.obj"/>
+//   </shape>
+//   <shape type="serialized">
+//       <string name="filename" value="meshes/scene.serialized"/>
+//       <integer name="shape_index" value="2"/>
 //   </shape>
 
 #include <assimp/postprocess.h>
@@ -20,7 +26,9 @@
 #include "core/errors/interrupted.h"
 #include "core/registry/properties.h"
 #include "core/shapes/ply_reader.h"
+#include "core/shapes/serialized_reader.h"
 #include "core/shapes/triangle_mesh.h"
+#include "core/shapes/vertex_normals.h"
 
 namespace caustica {
 namespace {
@@ -38,7 +46,7 @@ class StopOnRequest final : public Assimp::ProgressHandler {
   bool Update(float) override { return !stop_request().load(); }
 };
 
-MeshData read_obj_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
+MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
   const std::filesystem::path file = mesh_file(props);
   Assimp::Importer importer;
   importer.SetProgressHandler(new StopOnRequest);  // the importer owns it
@@ -54,8 +62,7 @@ MeshData read_obj_file(const Properties& props, bool flip_tex_coords, bool face_
     const auto base = uint32_t(mesh.positions.size());
     for (unsigned v = 0; v < in->mNumVertices; ++v) {
       mesh.positions.emplace_back(in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z);
-      if (in->HasNormals() && !face_normals)
-        mesh.normals.emplace_back(in->mNormals[v].x, in->mNormals[v].y, in->mNormals[v].z);
+      if (in->HasNormals()) mesh.normals.emplace_back(in->mNormals[v].x, in->mNormals[v].y, in->mNormals[v].z);
       if (in->HasTextureCoords(0)) {
         const aiVector3D t = in->mTextureCoords[0][v];
         mesh.uvs.emplace_back(t.x, flip_tex_coords ? 1 - t.y : t.y);
@@ -80,51 +87,93 @@ MeshData read_obj_file(const Properties& props, bool flip_tex_coords, bool face_
   return mesh;
 }
 
-MeshData read_ply_file(const Properties& props, bool flip_tex_coords, bool face_normals) {
-  const std::filesystem::path file = mesh_file(props);
+std::string file_bytes(const Properties& props, const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
   if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
+  return std::move(bytes).str();
+}
+
+MeshData read_ply_file(const Properties& props, bool flip_tex_coords) {
+  const std::filesystem::path file = mesh_file(props);
   MeshData mesh;
   try {
-    mesh = read_ply(bytes.view());
+    mesh = read_ply(file_bytes(props, file));
   } catch (const PlyError& e) {
     throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
   }
-  if (face_normals) mesh.normals.clear();
   if (flip_tex_coords)
     for (Vec2& uv : mesh.uvs) uv.y = 1 - uv.y;
   if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
   return mesh;
 }
 
-std::vector<ParamSpec> file_params(const char* flip_default) {
+MeshData read_serialized_file(const Properties& props) {
+  const std::filesystem::path file = mesh_file(props);
+  const int64_t index = props.get_int("shape_index");
+  if (index < 0) throw props.error("shape_index", "must not be negative");
+  MeshData mesh;
+  try {
+    mesh = read_serialized(file_bytes(props, file), uint64_t(index));
+  } catch (const SerializedError& e) {
+    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
+  }
+  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
+  return mesh;
+}
+
+// The normals the mesh is shaded with.
+MeshData shaded(MeshData mesh, const Properties& props) {
+  if (props.get_bool("face_normals") || mesh.face_normals)
+    mesh.normals.clear();
+  else if (mesh.normals.empty())
+    mesh.normals = smooth_vertex_normals(mesh);
+  return mesh;
+}
+
+std::vector<ParamSpec> file_params() {
   auto params = mesh_shape_params();
   params.push_back({"filename", ParamType::String, std::nullopt, "mesh file, relative to the scene file"});
-  params.push_back(
-      {"face_normals", ParamType::Boolean, "false", "use face normals, ignoring the file's vertex normals"});
+  params.push_back({"face_normals", ParamType::Boolean, "false",
+                    "shade with face normals: ignore the file's vertex normals, and compute none"});
+  return params;
+}
+
+std::vector<ParamSpec> file_params(const char* flip_default) {
+  auto params = file_params();
   params.push_back({"flip_tex_coords", ParamType::Boolean, flip_default, "flip v to 1 - v, as Mitsuba does for OBJ"});
+  return params;
+}
+
+std::vector<ParamSpec> serialized_params() {
+  auto params = file_params();
+  params.push_back({"shape_index", ParamType::Integer, "0", "which of the file's meshes, counted from 0"});
   return params;
 }
 
 class ObjShape final : public TriangleMesh {
  public:
   explicit ObjShape(const Properties& props)
-      : TriangleMesh(read_obj_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
-                     "obj") {}
+      : TriangleMesh(shaded(read_obj_file(props, props.get_bool("flip_tex_coords")), props), props, "obj") {}
 };
 
 class PlyShape final : public TriangleMesh {
  public:
   explicit PlyShape(const Properties& props)
-      : TriangleMesh(read_ply_file(props, props.get_bool("flip_tex_coords"), props.get_bool("face_normals")), props,
-                     "ply") {}
+      : TriangleMesh(shaded(read_ply_file(props, props.get_bool("flip_tex_coords")), props), props, "ply") {}
+};
+
+class SerializedShape final : public TriangleMesh {
+ public:
+  explicit SerializedShape(const Properties& props)
+      : TriangleMesh(shaded(read_serialized_file(props), props), props, "serialized") {}
 };
 
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ObjShape, "shape", "obj", file_params("true"), {"bsdf", "emitter"});
 CAUSTICA_REGISTER_PLUGIN(PlyShape, "shape", "ply", file_params("false"), {"bsdf", "emitter"});
+CAUSTICA_REGISTER_PLUGIN(SerializedShape, "shape", "serialized", serialized_params(), {"bsdf", "emitter"});
 
 }  // namespace caustica

@@ -19,6 +19,7 @@ struct MeshData {
   std::vector<Vec3> normals;      // empty, or one per position
   std::vector<Vec2> uvs;          // empty, or one per position
   std::vector<uint32_t> indices;  // three per triangle
+  bool face_normals = false;      // the file asks for flat shading
 };
 
 // Every shape made of triangles (obj, ply, rectangle, cube): stored in world
