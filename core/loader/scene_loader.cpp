@@ -144,7 +144,7 @@ class Instantiator {
       if (name && props.info().param(*name))
         props.set(*name, {ValueKind::Object, obj, child.where});
       else
-        props.add_child(obj, child.where);
+        props.add_child(obj, child.where, name ? *name : "");
     } else {
       throw SceneError(child.where, "unknown element <" + child.tag + ">");
     }

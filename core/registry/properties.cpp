@@ -31,11 +31,24 @@ void Properties::set(const std::string& name, PropertyValue value) {
   values_.emplace_back(name, std::move(value));
 }
 
-void Properties::add_child(ObjectValue child, const SourceLocation& where) {
+void Properties::add_child(ObjectValue child, const SourceLocation& where, const std::string& name) {
   const auto& accepted = info_->child_categories;
-  if (std::find(accepted.begin(), accepted.end(), child.category) == accepted.end())
-    throw SceneError(where, plugin_name(*info_) + " does not take a nested <" + child.category +
-                                "> (accepted: " + join_names(accepted) + ")");
+  if (std::find(accepted.begin(), accepted.end(), child.category) == accepted.end()) {
+    // An object this plugin takes only as a parameter (a texture as a
+    // reflectance): say which names it goes by.
+    std::vector<std::string> params;
+    for (const ParamSpec& spec : info_->params)
+      if (kind_fits(ValueKind::Object, spec.type, child.category)) params.push_back(spec.name);
+    const std::string place = plugin_name(*info_);
+    if (params.empty())
+      throw SceneError(
+          where, place + " does not take a nested <" + child.category + "> (accepted: " + join_names(accepted) + ")");
+    if (name.empty())
+      throw SceneError(where, place + " takes a nested <" + child.category +
+                                  "> only as a parameter: name it (name=\"...\"): " + join_names(params));
+    throw SceneError(where, place + " has no parameter '" + name + "' that takes a <" + child.category +
+                                "> (those that do: " + join_names(params) + ")");
+  }
   children_.emplace_back(std::move(child), where);
 }
 

@@ -23,7 +23,9 @@ class Properties {
   // Loader side; each checks the value against the declaration and throws
   // SceneError naming the file, line and what is accepted.
   void set(const std::string& name, PropertyValue value);
-  void add_child(ObjectValue child, const SourceLocation& where);
+  // `name`, if the element had one, is named in the error for an object
+  // the plugin takes only as a parameter of another name.
+  void add_child(ObjectValue child, const SourceLocation& where, const std::string& name = "");
 
   const PluginInfo& info() const { return *info_; }
   // The values set, in the order they were given.

@@ -183,6 +183,15 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<emitter type='area'><rgb name='radiance' value='1'/>"
                  "</emitter></bsdf></scene>",
                  "bad.xml:3: bsdf 'diffuse' does not take a nested <emitter>"},
+        BadInput{"texture under a wrong name",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<texture type='checkerboard' "
+                 "name='diffuse_reflectance'/></bsdf></scene>",
+                 "bad.xml:3: bsdf 'diffuse' has no parameter 'diffuse_reflectance' that takes a <texture> (those "
+                 "that do: reflectance)"},
+        BadInput{"texture without a name",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<texture type='checkerboard'/></bsdf></scene>",
+                 "bad.xml:3: bsdf 'diffuse' takes a nested <texture> only as a parameter: name it (name=\"...\"): "
+                 "reflectance"},
         BadInput{"missing radiance",
                  "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='area'/></shape></scene>",
                  "bad.xml:3: emitter 'area' requires parameter 'radiance'"},
