@@ -49,6 +49,7 @@ TEST(BdptStrategyLayers, SumToTheBeauty) {
       layers += sum;
     }
   EXPECT_GT(beauty, 0);
+  EXPECT_NEAR(layers, beauty, 1e-4 * beauty);
   // The caustic under the sphere comes from light tracing: some light lands
   // in layers with t = 1.
   double light_traced = 0;
