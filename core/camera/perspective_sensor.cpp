@@ -42,7 +42,18 @@ class PerspectiveSensor final : public Sensor {
     const float fov = props.get_float("fov");
     if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
     if (!(near_ > 0 && far_ > near_)) throw props.error("far_clip", "need 0 < near_clip < far_clip");
-    const float w = float(film()->width()), h = float(film()->height());
+    const Vec2i full = film()->full_size(), crop = film()->crop_offset();
+    const float w = float(full.x), h = float(full.y);
+    // As Mitsuba: the principal point's offset from the film's centre, in
+    // fractions of the film's width and height.
+    const float ppx = props.get_float("principal_point_offset_x"), ppy = props.get_float("principal_point_offset_y");
+    if (!std::isfinite(ppx)) throw props.error("principal_point_offset_x", "must be finite");
+    if (!std::isfinite(ppy)) throw props.error("principal_point_offset_y", "must be finite");
+    // Raster positions of the crop window map to [0, 1]^2 over the film as
+    // u = (raster + crop offset) / size + principal point offset.
+    size_ = {w, h};
+    crop_ = {float(crop.x), float(crop.y)};
+    principal_point_ = {ppx, ppy};
     const std::string axis = props.get_string("fov_axis");
     const float t = std::tan(fov * kPi / 360);
     if (axis == "x" || (axis == "smaller" && w <= h) || (axis == "larger" && w > h)) {
@@ -60,12 +71,15 @@ class PerspectiveSensor final : public Sensor {
     }
     origin_ = to_world_.point({0, 0, 0});
     forward_ = normalize(to_world_.vector({0, 0, 1}));
-    image_plane_area_ = 4 * tan_x_ * tan_y_;
+    // The crop window's part of the image plane at distance 1: importance
+    // integrates to one over what is rendered.
+    image_plane_area_ = 4 * tan_x_ * tan_y_ * (float(film()->width()) / w) * (float(film()->height()) / h);
   }
 
   Ray generate_ray(Vec2 raster, Vec2) const override {
-    const Vec3 local{-(2 * raster.x / film()->width() - 1) * tan_x_, -(2 * raster.y / film()->height() - 1) * tan_y_,
-                     1};
+    const Vec2 u{(raster.x + crop_.x) / size_.x + principal_point_.x,
+                 (raster.y + crop_.y) / size_.y + principal_point_.y};
+    const Vec3 local{-(2 * u.x - 1) * tan_x_, -(2 * u.y - 1) * tan_y_, 1};
     const Vec3 d_local = normalize(local);
     const Vec3 d = normalize(to_world_.vector(d_local));
     return {origin_, d, far_ / d_local.z, near_ / d_local.z};
@@ -110,14 +124,15 @@ class PerspectiveSensor final : public Sensor {
     const Vec3 local = to_camera_.vector(d_world);
     if (local.z <= 0) return false;
     const float x = local.x / local.z, y = local.y / local.z;
-    raster->x = (1 - x / tan_x_) * 0.5f * film()->width();
-    raster->y = (1 - y / tan_y_) * 0.5f * film()->height();
+    raster->x = ((1 - x / tan_x_) * 0.5f - principal_point_.x) * size_.x - crop_.x;
+    raster->y = ((1 - y / tan_y_) * 0.5f - principal_point_.y) * size_.y - crop_.y;
     return raster->x >= 0 && raster->x < film()->width() && raster->y >= 0 && raster->y < film()->height();
   }
 
   Transform to_world_, to_camera_;
   float near_, far_;
   float tan_x_ = 1, tan_y_ = 1;
+  Vec2 size_{1, 1}, crop_, principal_point_;
   Vec3 origin_, forward_;
   float image_plane_area_ = 4;
 };
@@ -131,6 +146,9 @@ CAUSTICA_REGISTER_PLUGIN(
      {"near_clip", ParamType::Float, "0.01", "near plane distance"},
      {"far_clip", ParamType::Float, "10000", "far plane distance"},
      {"focus_distance", ParamType::Float, "0", "accepted for compatibility and ignored; a pinhole is always in focus"},
+     {"principal_point_offset_x", ParamType::Float, "0",
+      "principal point's offset from the film's centre, in film widths (a shifted lens)"},
+     {"principal_point_offset_y", ParamType::Float, "0", "the same downward, in film heights"},
      {"to_world", ParamType::Transform, "", "camera placement; it looks along local +z, with +y up and +x left"}},
     {"film", "sampler"});
 

@@ -22,7 +22,12 @@ int InfoCommand::run() const {
   std::map<std::string, int> shape_kinds;
   for (const auto& s : scene->shapes()) ++shape_kinds[s->kind()];
   std::printf("scene: %s\n", scene_.c_str());
-  std::printf("film: %dx%d\n", scene->sensor().film()->width(), scene->sensor().film()->height());
+  const Film& film = *scene->sensor().film();
+  if (film.full_size() == Vec2i{film.width(), film.height()})
+    std::printf("film: %dx%d\n", film.width(), film.height());
+  else
+    std::printf("film: %dx%d, rendering the crop window %dx%d at (%d, %d)\n", film.full_size().x, film.full_size().y,
+                film.width(), film.height(), film.crop_offset().x, film.crop_offset().y);
   std::printf("integrator: %s\n", scene.integrator->describe().c_str());
   std::printf("shapes: %zu", scene->shapes().size());
   for (const auto& [kind, n] : shape_kinds) std::printf(" (%s: %d)", kind.c_str(), n);

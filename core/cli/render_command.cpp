@@ -17,7 +17,9 @@ namespace caustica {
 void RenderCommand::add_to(CLI::App& app) {
   command_ = app.add_subcommand("render", "render a scene to OUT.exr (linear) and OUT.png (display)");
   command_->add_option("scene", scene_, "Mitsuba 3 scene file")->required()->check(CLI::ExistingFile);
-  command_->add_option("-o,--output", output_, "output EXR (default: SCENE_NAME.exr); the PNG goes beside it");
+  command_->add_option("-o,--output", output_,
+                       "linear output: .exr, or .hdr (Radiance RGBE) or .pfm with the beauty only (default: "
+                       "SCENE_NAME and the film's file_format); the PNG goes beside it");
   auto* spp = command_->add_option("--spp", spp_, "samples per pixel (default: the scene's sampler)")
                   ->check(CLI::Range(1u, 1u << 31));
   command_->add_option("--time", time_, "render for this many seconds instead")
@@ -41,6 +43,21 @@ void RenderCommand::add_to(CLI::App& app) {
 }
 
 namespace {
+
+// The linear output's file: -o, else the scene's name with the extension of
+// the film's file_format.
+std::filesystem::path linear_output(const std::string& output, const std::string& scene, const Film& film) {
+  if (!output.empty()) {
+    const std::filesystem::path path = output;
+    const std::string ext = path.extension().string();
+    if (ext != ".exr" && ext != ".hdr" && ext != ".pfm")
+      throw std::invalid_argument("output must end in .exr, .hdr or .pfm: " + output);
+    return path;
+  }
+  const FileFormat format = film.output().file;
+  const char* ext = format == FileFormat::Rgbe ? ".hdr" : format == FileFormat::Pfm ? ".pfm" : ".exr";
+  return std::filesystem::path(scene).stem().string() + ext;
+}
 
 std::string replay_command(const std::string& scene, SampleId id, uint64_t seed) {
   return "caustica render " + scene + " --seed " + std::to_string(seed) + " --debug-pixel " +
@@ -84,8 +101,10 @@ int RenderCommand::run() const {
     std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
   if (!debug_pixel_.empty()) return replay(job);
 
-  const std::filesystem::path exr = output_.empty() ? std::filesystem::path(scene_).stem().string() + ".exr" : output_;
-  if (exr.extension() != ".exr") throw std::invalid_argument("output must end in .exr: " + exr.string());
+  const Film& film = *job.scene()->sensor().film();
+  const std::filesystem::path exr = linear_output(output_, scene_, film);
+  const bool plain = exr.extension() != ".exr";
+  if (plain && raw_sums_) throw std::invalid_argument("--raw-sums needs an .exr output, not " + exr.string());
   std::filesystem::path png = exr;
   png.replace_extension(".png");
   // Everything that can fail on bad options fails before the render.
@@ -106,11 +125,11 @@ int RenderCommand::run() const {
   }
   const RenderStats& stats = result->stats;
 
-  const Image image =
-      render_layers(result->film, result->aovs ? &*result->aovs : nullptr, stats.variance_known, raw_sums_);
+  Image image = render_layers(result->film, result->aovs ? &*result->aovs : nullptr, stats.variance_known, raw_sums_);
+  add_pixel_format_channels(image, film.output().pixels);
   std::map<std::string, std::string> metadata = render_metadata(job, *result, scene_, raw_sums_);
   metadata["caustica:develop"] = developer.describe();
-  bool half = !raw_sums_ && (exr_format_.empty() ? job.scene()->sensor().film()->half_float() : exr_format_ == "half");
+  bool half = !raw_sums_ && !plain && (exr_format_.empty() ? film.half_float() : exr_format_ == "half");
   if (const size_t n = values_beyond_half(image); half && n > 0) {
     half = false;
     std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n", n,
@@ -119,7 +138,12 @@ int RenderCommand::run() const {
   if (const size_t n = values_at_float_limit(image); n > 0)
     std::fprintf(stderr,
                  "caustica: warning: %zu variance values exceed the float range and are clamped to its largest\n", n);
-  write_exr(exr, image, metadata, half);
+  if (!plain)
+    write_exr(exr, image, metadata, half);
+  else if (exr.extension() == ".pfm" && film.output().pixels == PixelFormat::Luminance)
+    write_plain_float(exr, image, {"Y"});
+  else
+    write_plain_float(exr, image, {"R", "G", "B"});
   write_png(png, image.width, image.height, developer.develop(image), develop_.png_bits());
 
   if (!quiet_) {

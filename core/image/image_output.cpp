@@ -3,8 +3,10 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 
@@ -21,6 +23,23 @@ void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& s
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "': " + OIIO::geterror());
   if (!out->open(path.string(), spec) || !out->write_image(data_type, data) || !out->close())
     throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
+}
+
+// PFM, which OpenImageIO 2.4 reads but cannot write: a text header ("PF"
+// for RGB, "Pf" for one channel, the size, and a negative scale for
+// little-endian data), then float rows from the bottom up.
+void write_pfm(const std::filesystem::path& path, int width, int height, int channels, const float* data) {
+  std::ofstream out(path, std::ios::binary);
+  out << (channels == 3 ? "PF" : "Pf") << "\n" << width << " " << height << "\n-1.0\n";
+  const size_t row = size_t(width) * channels;
+  for (int y = height - 1; y >= 0; --y)
+    for (size_t i = 0; i < row; ++i) {
+      const uint32_t bits = std::bit_cast<uint32_t>(data[size_t(y) * row + i]);
+      const char bytes[4] = {char(bits), char(bits >> 8), char(bits >> 16), char(bits >> 24)};
+      out.write(bytes, 4);
+    }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
 }  // namespace
@@ -47,6 +66,27 @@ void write_exr(const std::filesystem::path& path, const Image& image,
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
   write_atomically(path, [&](const std::filesystem::path& tmp) {
     write_with_oiio(tmp, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
+  });
+}
+
+void write_plain_float(const std::filesystem::path& path, const Image& image,
+                       const std::vector<std::string>& channels) {
+  const size_t n = channels.size(), stride = image.channels.size(), pixels = size_t(image.width) * image.height;
+  std::vector<int> from;
+  for (const std::string& name : channels) {
+    from.push_back(image.channel_index(name));
+    if (from.back() < 0) throw std::logic_error("write_plain_float: the image has no channel " + name);
+  }
+  std::vector<float> data(pixels * n);
+  for (size_t p = 0; p < pixels; ++p)
+    for (size_t c = 0; c < n; ++c) data[p * n + c] = image.pixels[p * stride + size_t(from[c])];
+  OIIO::ImageSpec spec(image.width, image.height, int(n), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = channels;
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    if (path.extension() == ".pfm")
+      write_pfm(tmp, image.width, image.height, int(n), data.data());
+    else
+      write_with_oiio(tmp, spec, OIIO::TypeDesc::FLOAT, data.data());
   });
 }
 

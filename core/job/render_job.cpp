@@ -12,7 +12,8 @@ RenderResult RenderJob::run(RenderProgress* progress) const {
   const Film& film = *scene_->sensor().film();
   RenderResult result{FilmBuffer(film.width(), film.height(), integrator_->channels()), std::nullopt, {}};
   const bool radiance = result.film.channels() == std::vector<std::string>{"R", "G", "B"};
-  if (settings_.aovs && radiance) result.aovs.emplace(film.width(), film.height(), standard_aov_channels());
+  if (settings_.aovs && radiance)
+    result.aovs.emplace(film.width(), film.height(), standard_aov_channels(film.output().alpha));
   RenderOptions options;
   options.spp = settings_.spp;
   options.first_sample = settings_.first_sample;

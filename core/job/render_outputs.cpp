@@ -34,6 +34,28 @@ Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool varianc
   return image;
 }
 
+void add_pixel_format_channels(Image& image, PixelFormat format) {
+  if (format == PixelFormat::Rgb) return;
+  // Rows of the Rec. 709 (D65) to CIE XYZ matrix; the middle one is luminance.
+  static const float kToXyz[3][3] = {
+      {0.4124564f, 0.3575761f, 0.1804375f}, {0.2126729f, 0.7151522f, 0.0721750f}, {0.0193339f, 0.1191920f, 0.9503041f}};
+  const int rows_begin = format == PixelFormat::Luminance ? 1 : 0, rows_end = format == PixelFormat::Luminance ? 2 : 3;
+  const int r = image.channel_index("R"), g = image.channel_index("G"), b = image.channel_index("B");
+  const size_t old_count = image.channels.size(), added = size_t(rows_end - rows_begin);
+  const size_t pixels = size_t(image.width) * image.height;
+  std::vector<float> out(pixels * (old_count + added));
+  for (size_t p = 0; p < pixels; ++p) {
+    const float* in = &image.pixels[p * old_count];
+    float* o = &out[p * (old_count + added)];
+    std::copy_n(in, old_count, o);
+    for (int row = rows_begin; row < rows_end; ++row)
+      o[old_count + size_t(row - rows_begin)] =
+          kToXyz[row][0] * in[r] + kToXyz[row][1] * in[g] + kToXyz[row][2] * in[b];
+  }
+  for (int row = rows_begin; row < rows_end; ++row) image.channels.push_back(std::string(1, "XYZ"[row]));
+  image.pixels = std::move(out);
+}
+
 void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,
                            std::map<std::string, std::string>& metadata) {
   const auto list = [](const std::vector<std::string>& names) {

@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "core/film/film.h"
 #include "core/film/film_buffer.h"
 #include "core/image/image_output.h"
 #include "core/job/render_job.h"
@@ -14,6 +15,11 @@ namespace caustica {
 // estimate, and samples.Y; with `raw_sums`, the films' raw sums (raw.*,
 // raw.aov.*), from which renders of disjoint sample ranges merge exactly.
 Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums);
+
+// Adds the colour channels the film's pixel format asks for beside R, G, B
+// (caustica's own tools read those): Y for luminance, X, Y, Z for xyz, from
+// linear Rec. 709 with its D65 white.
+void add_pixel_format_channels(Image& image, PixelFormat format);
 
 // The metadata caustica writes beside a render: scene, plan, integrator,
 // the sample range, time, counts, seed, what the integrator reported, and

@@ -15,7 +15,8 @@ const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
                                                   {"geo_normal", AovKind::GeoNormal},
                                                   {"position", AovKind::Position},
                                                   {"uv", AovKind::Uv},
-                                                  {"depth", AovKind::Depth}};
+                                                  {"depth", AovKind::Depth},
+                                                  {"coverage", AovKind::Coverage}};
 
 const char* suffixes(AovKind kind) {
   switch (kind) {
@@ -29,6 +30,8 @@ const char* suffixes(AovKind kind) {
       return "UV";
     case AovKind::Depth:
       return "T";
+    case AovKind::Coverage:
+      return "A";
   }
   return "";
 }
@@ -47,7 +50,7 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
     const auto it = std::find_if(std::begin(kKinds), std::end(kKinds), [&](const auto& k) { return kind == k.first; });
     if (it == std::end(kKinds))
       throw std::invalid_argument("unknown kind '" + kind +
-                                  "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth)");
+                                  "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth, coverage)");
     out.push_back({item.substr(0, colon), it->second});
     start = end + 1;
   }
@@ -57,7 +60,8 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
 std::vector<std::string> AovEvaluator::channels() const {
   std::vector<std::string> out;
   for (const AovSpec& a : aovs_)
-    for (const char* c = suffixes(a.kind); *c; ++c) out.push_back(a.name + "." + *c);
+    for (const char* c = suffixes(a.kind); *c; ++c)
+      out.push_back(a.name.empty() ? std::string(1, *c) : a.name + "." + *c);
   return out;
 }
 
@@ -90,6 +94,9 @@ void AovEvaluator::evaluate(const Scene& scene, const Ray& ray, std::span<float>
         break;
       case AovKind::Depth:
         put({si->t, 0, 0}, 1);
+        break;
+      case AovKind::Coverage:
+        put({1, 0, 0}, 1);
         break;
     }
   }

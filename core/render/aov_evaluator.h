@@ -10,7 +10,7 @@ namespace caustica {
 
 class Scene;
 
-enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth };
+enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth, Coverage };
 
 struct AovSpec {
   std::string name;
@@ -18,7 +18,7 @@ struct AovSpec {
 };
 
 // Parses "name:kind,name:kind" (kinds: albedo, sh_normal, geo_normal,
-// position, uv, depth); throws std::invalid_argument naming the bad item.
+// position, uv, depth, coverage); throws std::invalid_argument naming the bad item.
 std::vector<AovSpec> parse_aov_list(const std::string& text);
 
 // Values at the first surface a ray meets: noise-free inputs for denoisers
@@ -27,7 +27,9 @@ class AovEvaluator {
  public:
   explicit AovEvaluator(std::vector<AovSpec> aovs) : aovs_(std::move(aovs)) {}
 
-  // Channel names: name.R/G/B, name.X/Y/Z, name.U/V or name.T (depth).
+  // Channel names: name.R/G/B, name.X/Y/Z, name.U/V, name.T (depth) or
+  // name.A (coverage: 1 where the ray meets a surface, an alpha channel);
+  // without a name, only the suffix ("A").
   std::vector<std::string> channels() const;
   void evaluate(const Scene& scene, const Ray& ray, std::span<float> out) const;
 

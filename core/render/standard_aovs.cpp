@@ -1,25 +1,32 @@
 #include "core/render/standard_aovs.h"
 
 #include "core/render/aov_evaluator.h"
+#include "core/scene/scene.h"
 
 namespace caustica {
 
 namespace {
 
-const AovEvaluator& standard_aovs() {
-  static const AovEvaluator evaluator(parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth"));
-  return evaluator;
+const AovEvaluator& standard_aovs(bool alpha) {
+  static const AovEvaluator without(parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth"));
+  // Unnamed, coverage is the film's alpha channel "A".
+  static const AovEvaluator with([] {
+    auto aovs = parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth");
+    aovs.push_back({"", AovKind::Coverage});
+    return aovs;
+  }());
+  return alpha ? with : without;
 }
 
 }  // namespace
 
-std::vector<std::string> standard_aov_channels() { return standard_aovs().channels(); }
+std::vector<std::string> standard_aov_channels(bool alpha) { return standard_aovs(alpha).channels(); }
 
 void add_standard_aovs(const Scene& scene, const CameraSample& cs, SampleId id, FilmBuffer& aovs,
                        std::vector<float>& scratch) {
   if (id.index >= kAovSamples) return;
   scratch.resize(aovs.channel_count());
-  standard_aovs().evaluate(scene, cs.ray, scratch);
+  standard_aovs(scene.sensor().film()->output().alpha).evaluate(scene, cs.ray, scratch);
   aovs.add_sample(id, scratch, cs.weight);
 }
 

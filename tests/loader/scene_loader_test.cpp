@@ -192,6 +192,20 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<texture type='checkerboard'/></bsdf></scene>",
                  "bad.xml:3: bsdf 'diffuse' takes a nested <texture> only as a parameter: name it (name=\"...\"): "
                  "reflectance"},
+        BadInput{"crop window beyond the film",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><film type='hdrfilm'>"
+                 "<integer name='width' value='16'/><integer name='crop_offset_x' value='10'/>\n"
+                 "<integer name='crop_width' value='7'/></film></sensor></scene>",
+                 "bad.xml:3: parameter 'crop_width' of film 'hdrfilm': must be between 1 and 6"},
+        BadInput{"unknown pixel format",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><film type='hdrfilm'>\n"
+                 "<string name='pixel_format' value='spectrum'/></film></sensor></scene>",
+                 "bad.xml:3: parameter 'pixel_format' of film 'hdrfilm': must be rgb, rgba, luminance, "
+                 "luminance_alpha, xyz or xyza, not 'spectrum'"},
+        BadInput{"unknown file format",
+                 "<scene version='3.0.0'>\n<sensor type='perspective'><film type='hdrfilm'>\n"
+                 "<string name='file_format' value='png'/></film></sensor></scene>",
+                 "bad.xml:3: parameter 'file_format' of film 'hdrfilm': must be openexr, rgbe or pfm, not 'png'"},
         BadInput{"missing radiance",
                  "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='area'/></shape></scene>",
                  "bad.xml:3: emitter 'area' requires parameter 'radiance'"},
@@ -360,6 +374,30 @@ TEST(SceneLoader, WarningsNameTheFileAndLine) {
       "<integer name='width' value='$res'/></film></sensor></scene>",
       "used.xml", {{"res", "16"}});
   EXPECT_TRUE(used.warnings.empty());
+}
+
+// Film parameters that cannot matter to caustica are accepted, each with a
+// line saying so, as are 0.x's names for them.
+TEST(SceneLoader, FilmParametersWithoutEffectAreSaidToBe) {
+  const LoadedScene scene = load_scene_string(
+      "<scene version='3.0.0'><sensor type='perspective'><film type='hdrfilm'>\n"
+      "<boolean name='banner' value='false'/>\n<boolean name='sample_border' value='true'/>\n"
+      "<string name='component_format' value='uint32'/></film></sensor></scene>",
+      "film.xml");
+  EXPECT_THAT(scene.warnings,
+              testing::UnorderedElementsAre(
+                  "film.xml:2: parameter 'banner' of film 'hdrfilm': is ignored: caustica writes neither a banner nor "
+                  "a log into images",
+                  "film.xml:3: parameter 'sample_border' of film 'hdrfilm': has no effect: every pixel is already "
+                  "filtered over the filter's whole support, at the film's borders too",
+                  "film.xml:4: parameter 'component_format' of film 'hdrfilm': uint32 is written as float32: "
+                  "integers would truncate the radiance"));
+  const LoadedScene old = load_scene_string(
+      "<scene version='0.5.0'><sensor type='perspective'><film type='hdrfilm'>"
+      "<boolean name='highQualityEdges' value='false'/><boolean name='attachLog' value='true'/>"
+      "<string name='fileFormat' value='openexr'/></film></sensor></scene>",
+      "old.xml");
+  EXPECT_THAT(old.warnings, testing::ElementsAre(HasSubstr("parameter 'attach_log' of film 'hdrfilm': is ignored")));
 }
 
 // Stored relative to the camera, a small rectangle far from it is finer

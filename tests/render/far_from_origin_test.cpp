@@ -13,11 +13,10 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
+#include "tests/support/scene_copy.h"
 #include "tests/support/z_test.h"
 
 namespace caustica {
@@ -29,31 +28,18 @@ constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 16, kSpp = 16;
 const double kDistances[] = {1e4, 1e5, 1e6, 1e7};
 constexpr int kTests = int(std::size(kDistances)) * 3 * kRegionsPerSide * kRegionsPerSide;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The Cornell box's files with every to_world (the camera's too) followed
-// by a translation, written beside a link to the project's meshes.
+// The Cornell box with every to_world (the camera's too) followed by a
+// translation.
 fs::path moved_cornell_box(const std::string& name, double x, double y, double z) {
-  const fs::path source = fs::path(CAUSTICA_SOURCE_DIR) / "scenes";
-  const fs::path dir = fs::temp_directory_path() / "caustica_far_from_origin" / name;
-  fs::create_directories(dir / "cornell");
-  if (!fs::exists(dir / "meshes")) fs::create_directory_symlink(source / "meshes", dir / "meshes");
   char step[128];
   std::snprintf(step, sizeof step, "<translate x=\"%.17g\" y=\"%.17g\" z=\"%.17g\"/></transform>", x, y, z);
-  for (const char* file : {"cornell-box.xml", "cornell/room.xml"}) {
-    std::string text = read_file(source / file);
+  return test::edited_cornell_box("far_" + name, [&](std::string text) {
     for (size_t at = text.find("</transform>"); at != std::string::npos; at = text.find("</transform>", at + 1)) {
       text.replace(at, 12, step);
       at += std::string(step).size() - 12;
     }
-    std::ofstream(dir / file) << text;
-  }
-  return dir / "cornell-box.xml";
+    return text;
+  });
 }
 
 TEST(FarFromOrigin, TheCornellBoxRendersAsAtTheOrigin) {

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace caustica::test {
+
+// Copies scenes/cornell-box.xml and the room it includes into a temporary
+// folder named `name`, beside a link to the project's meshes, passing each
+// file's text through `edit`; returns the copy of cornell-box.xml.
+std::filesystem::path edited_cornell_box(const std::string& name, const std::function<std::string(std::string)>& edit);
+
+}  // namespace caustica::test
