@@ -9,6 +9,7 @@
 #include "core/camera/clip_check.h"
 #include "core/errors/interrupted.h"
 #include "core/lights/emitter.h"
+#include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
 #include "core/registry/properties.h"
@@ -21,8 +22,8 @@ const std::set<std::string> kObjectTags = {"integrator", "sensor", "film",    "s
                                            "shape",      "bsdf",   "emitter", "texture", "tonemap"};
 const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float},     {"integer", ValueKind::Integer},
                                                      {"boolean", ValueKind::Boolean}, {"string", ValueKind::String},
-                                                     {"rgb", ValueKind::Rgb},         {"spectrum", ValueKind::Rgb},
-                                                     {"point", ValueKind::Point},     {"vector", ValueKind::Vector}};
+                                                     {"rgb", ValueKind::Rgb},         {"point", ValueKind::Point},
+                                                     {"vector", ValueKind::Vector}};
 
 const std::string& required_attribute(const XmlNode& node, const char* name) {
   const std::string* v = node.attribute(name);
@@ -40,10 +41,7 @@ PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
     return {kind, Vec3d(coord("x"), coord("y"), coord("z")), node.where};
   }
   node.check_attributes({"name", "value"});
-  const std::string& text = required_attribute(node, "value");
-  if (node.tag == "spectrum" && text.find(':') != std::string::npos)
-    throw SceneError(node.where, "<spectrum> takes a single value here, not wavelength:value pairs");
-  return parse_value_text(kind, text, node.where);
+  return parse_value_text(kind, required_attribute(node, "value"), node.where);
 }
 
 // Instantiates plugins from nodes, each object once, resolving <ref> by id.
@@ -131,7 +129,9 @@ class Instantiator {
   }
 
   void add_child(Properties& props, const XmlNode& child) {
-    if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
+    if (child.tag == "spectrum" || child.tag == "blackbody") {
+      props.set(required_attribute(child, "name"), parse_spectrum_element(child));
+    } else if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
       props.set(required_attribute(child, "name"), parse_value_element(child, kind->second));
     } else if (child.tag == "transform") {
       child.check_attributes({"name"});

@@ -206,6 +206,22 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<sensor type='perspective'><film type='hdrfilm'>\n"
                  "<string name='file_format' value='png'/></film></sensor></scene>",
                  "bad.xml:3: parameter 'file_format' of film 'hdrfilm': must be openexr, rgbe or pfm, not 'png'"},
+        BadInput{"spectrum with falling wavelengths",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "value='400:0.5, 300:1'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: wavelengths must increase, but 300.000000 nm follows 400.000000 nm"},
+        BadInput{"unknown spectrum type",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' type='d50'/>"
+                 "</bsdf></scene>",
+                 "bad.xml:3: <spectrum type='d50'> is not known (known: blackbody)"},
+        BadInput{"black body without a temperature",
+                 "<scene version='3.0.0'>\n<emitter type='constant'>\n<blackbody name='radiance'/>"
+                 "</emitter></scene>",
+                 "bad.xml:3: <blackbody> needs a 'temperature' attribute"},
+        BadInput{"missing spectrum file",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "filename='nowhere.spd'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: cannot open spectrum file 'nowhere.spd'"},
         BadInput{"missing radiance",
                  "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='area'/></shape></scene>",
                  "bad.xml:3: emitter 'area' requires parameter 'radiance'"},
@@ -374,6 +390,34 @@ TEST(SceneLoader, WarningsNameTheFileAndLine) {
       "<integer name='width' value='$res'/></film></sensor></scene>",
       "used.xml", {{"res", "16"}});
   EXPECT_TRUE(used.warnings.empty());
+}
+
+// Spectra (wavelength:value lists, .spd files, black bodies in Mitsuba 3's
+// and 0.x's forms) become the RGB a flat spectrum of 2 gives: X = Y = Z = 2,
+// which Rec.709's published matrix takes to 2 x (1.2047843, 0.9483008,
+// 0.9088427); each scene's emitter must carry that power.
+TEST(SceneLoader, SpectraBecomeRgb) {
+  const auto power = [](const std::string& radiance) {
+    const auto scene = test::scene_from_xml("<scene version='3.0.0'><shape type='sphere'><emitter type='area'>" +
+                                            radiance + "</emitter></shape></scene>");
+    return scene->emitters()[0]->power();
+  };
+  const Color expected = power("<rgb name='radiance' value='2.4095686, 1.8966016, 1.8176854'/>");
+  const auto spd = std::filesystem::temp_directory_path() / "caustica_flat2.spd";
+  std::ofstream(spd) << "360 2\n830 2\n";
+  for (const std::string& radiance : {std::string("<spectrum name='radiance' value='360:2, 500:2, 830:+2'/>"),
+                                      "<spectrum name='radiance' filename='" + spd.string() + "'/>"}) {
+    const Color c = power(radiance);
+    EXPECT_NEAR(c.r / expected.r, 1, 2e-3) << radiance;
+    EXPECT_NEAR(c.g / expected.g, 1, 2e-3) << radiance;
+    EXPECT_NEAR(c.b / expected.b, 1, 2e-3) << radiance;
+  }
+  const Color modern = power(
+      "<spectrum name='radiance' type='blackbody'><float name='temperature' value='4000'/>"
+      "<float name='scale' value='1e-6'/></spectrum>");
+  const Color old = power("<blackbody name='radiance' temperature='4000K' multiplier='1e-6'/>");
+  EXPECT_FLOAT_EQ(modern.r, old.r);
+  EXPECT_GT(modern.r, modern.b);  // 4000 K is warm
 }
 
 // Film parameters that cannot matter to caustica are accepted, each with a

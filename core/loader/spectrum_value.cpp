@@ -1,0 +1,69 @@
+#include "core/loader/spectrum_value.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace caustica {
+namespace {
+
+double number(const XmlNode& node, const std::string& text, const char* what) {
+  std::string t = text;
+  if (!t.empty() && (t.back() == 'K' || t.back() == 'k')) t.pop_back();
+  try {
+    size_t used = 0;
+    const double v = std::stod(t, &used);
+    if (used == t.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  throw SceneError(node.where, "cannot read '" + text.substr(0, 40) + "' as " + what);
+}
+
+PropertyValue rgb(const XmlNode& node, Color c) { return {ValueKind::Rgb, c, node.where}; }
+
+PropertyValue from_blackbody(const XmlNode& node, double kelvin, double scale) {
+  if (!(kelvin > 0)) throw SceneError(node.where, "a black body's temperature must be positive");
+  return rgb(node, spectrum_to_rgb(blackbody(kelvin)) * float(scale));
+}
+
+}  // namespace
+
+PropertyValue parse_spectrum_element(const XmlNode& node) {
+  if (node.tag == "blackbody") {
+    node.check_attributes({"name", "temperature", "multiplier", "scale"});
+    const std::string* t = node.attribute("temperature");
+    if (!t) throw SceneError(node.where, "<blackbody> needs a 'temperature' attribute");
+    const std::string* m = node.attribute("multiplier") ? node.attribute("multiplier") : node.attribute("scale");
+    return from_blackbody(node, number(node, *t, "a temperature"), m ? number(node, *m, "a multiplier") : 1);
+  }
+  if (const std::string* type = node.attribute("type")) {
+    node.check_attributes({"name", "type"});
+    if (*type != "blackbody")
+      throw SceneError(node.where, "<spectrum type='" + type->substr(0, 40) + "'> is not known (known: blackbody)");
+    double kelvin = 0, scale = 1;
+    for (const XmlNode& child : node.children) {
+      const std::string* name = child.attribute("name");
+      const std::string* value = child.attribute("value");
+      if (child.tag != "float" || !name || !value || (*name != "temperature" && *name != "scale"))
+        throw SceneError(child.where, "a black body takes <float name='temperature'> and <float name='scale'>");
+      (*name == "temperature" ? kelvin : scale) = number(child, *value, name->c_str());
+    }
+    return from_blackbody(node, kelvin, scale);
+  }
+  node.check_attributes({"name", "value", "filename"});
+  try {
+    if (const std::string* file = node.attribute("filename")) {
+      std::filesystem::path path = *file;
+      if (path.is_relative()) path = std::filesystem::path(node.where.file).parent_path() / path;
+      return rgb(node, spectrum_to_rgb(read_spd_file(path)));
+    }
+    const std::string* text = node.attribute("value");
+    if (!text) throw SceneError(node.where, "<spectrum> needs a 'value' or a 'filename' attribute");
+    if (text->find(':') == std::string::npos) return parse_value_text(ValueKind::Rgb, *text, node.where);
+    return rgb(node, spectrum_to_rgb(parse_spectrum_pairs(*text)));
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(node.where, std::string("<spectrum>: ") + e.what());
+  }
+}
+
+}  // namespace caustica
