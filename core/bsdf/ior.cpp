@@ -1,5 +1,6 @@
 #include "core/bsdf/ior.h"
 
+#include <cmath>
 #include <utility>
 
 #include "core/registry/properties.h"
@@ -51,7 +52,9 @@ float read_ior(const Properties& props, const std::string& name) {
   } else {
     ior = v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
   }
-  if (!(ior >= 1)) throw props.error(name, "an index of refraction must be at least 1");
+  // As in Mitsuba, any positive index: an interface whose inside is the
+  // less dense medium (air in ice) has int_ior below ext_ior, or below 1.
+  if (!(ior > 0 && std::isfinite(ior))) throw props.error(name, "an index of refraction must be positive");
   return ior;
 }
 

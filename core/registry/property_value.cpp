@@ -40,6 +40,8 @@ std::vector<double> parse_numbers(const std::string& text, const SourceLocation&
   while (p < end) {
     while (p < end && (*p == ',' || std::isspace(static_cast<unsigned char>(*p)))) ++p;
     if (p == end) break;
+    // An explicit sign, as Mitsuba's files write (+0.3); from_chars takes only '-'.
+    if (*p == '+' && p + 1 < end && *(p + 1) != '-' && *(p + 1) != '+') ++p;
     double v = 0;
     auto [next, ec] = std::from_chars(p, end, v);
     if (ec != std::errc() || !std::isfinite(v))
@@ -65,7 +67,8 @@ PropertyValue parse_value_text(ValueKind kind, const std::string& text, const So
       break;
     case ValueKind::Integer: {
       int64_t i = 0;
-      auto [next, ec] = std::from_chars(text.data(), text.data() + text.size(), i);
+      const char* begin = text.data() + (text.size() > 1 && text[0] == '+' && text[1] != '-' ? 1 : 0);
+      auto [next, ec] = std::from_chars(begin, text.data() + text.size(), i);
       if (ec != std::errc() || next != text.data() + text.size())
         throw SceneError(where, "cannot parse '" + text + "' as integer");
       v.value = i;
@@ -124,7 +127,8 @@ bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_cate
       return given == ValueKind::Rgb || given == ValueKind::Float || given == ValueKind::Integer ||
              (given == ValueKind::Object && object_category == "texture");
     case ParamType::Point:
-      return given == ValueKind::Point;
+      // Exporters write a point light's position as a <vector> (Blender's).
+      return given == ValueKind::Point || given == ValueKind::Vector;
     case ParamType::Vector:
       return given == ValueKind::Vector || given == ValueKind::Point;
     case ParamType::Transform:

@@ -367,6 +367,25 @@ TEST(SceneLoader, ErrorsQuoteOnlyAnExcerptOfLongValues) {
   EXPECT_LT(error.size(), 300u);
 }
 
+// As Mitsuba reads them: numbers with an explicit '+', and a point light's
+// position given as a <vector> (as Blender's exporter writes it).
+TEST(SceneLoader, ValuesAsExportersWriteThem) {
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><shape type='sphere'><float name='radius' value='+0.5'/>"
+      "<point name='center' value='+1, -2, +3'/></shape>"
+      "<emitter type='point'><vector name='position' x='0' y='+2' z='0'/><rgb name='intensity' value='1'/>"
+      "</emitter><sensor type='perspective'><film type='hdrfilm'><integer name='width' value='+8'/>"
+      "</film></sensor></scene>");
+  EXPECT_FLOAT_EQ(scene->shapes()[0]->area(), float(4 * M_PI * 0.25));
+  EXPECT_EQ(scene->sensor().film()->width(), 8);
+  const auto hit = scene->intersect({scene->render_point({1, -2, 10}), {0, 0, -1}});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 6.5, 1e-5);
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='sphere'><float name='radius' value='++1'/>"
+                               "</shape></scene>"),
+              HasSubstr("cannot parse '++1' as float"));
+}
+
 TEST(SceneLoader, MirroredCameraIsAccepted) {
   EXPECT_NO_THROW(
       test::scene_from_xml("<scene version='3.0.0'><sensor type='perspective'><transform "

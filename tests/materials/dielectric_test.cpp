@@ -148,6 +148,30 @@ TEST(DielectricBsdf, TotalInternalReflection) {
   }
 }
 
+// An interior less dense than the outside (int_ior 0.763, ext_ior 1: air
+// in ice) reflects totally light arriving from outside beyond asin(0.763),
+// and refracts away from the normal below it.
+TEST(DielectricBsdf, ALessDenseInteriorReflectsTotallyFromOutside) {
+  const auto bsdf = test::make_bsdf(
+      "<bsdf type='dielectric'><float name='int_ior' value='0.763'/><float name='ext_ior' value='1'/></bsdf>");
+  const float critical = std::asin(0.763f);
+  for (float theta : {critical + 1e-3f, 1.2f}) {
+    const Vec3 wo = direction(theta);
+    for (float u_lobe : {0.0f, 0.5f, 0.999999f}) {
+      const auto s = bsdf->sample(kImportance, wo, u_lobe, {0.3f, 0.6f});
+      ASSERT_TRUE(s);
+      EXPECT_EQ(s->lobe, kDeltaReflection);
+      EXPECT_NEAR(sample_weight(*s), 1, 1e-6f);
+    }
+  }
+  const Vec3 wo = direction(0.5f);
+  const auto t = bsdf->sample(kImportance, wo, 0.999999f, {0.3f, 0.6f});
+  ASSERT_TRUE(t);
+  ASSERT_EQ(t->lobe, kDeltaTransmission);
+  EXPECT_NEAR(0.763f * std::hypot(t->wi.x, t->wi.y), std::hypot(wo.x, wo.y), 1e-5f);  // Snell
+  EXPECT_GT(std::hypot(t->wi.x, t->wi.y), std::hypot(wo.x, wo.y));
+}
+
 TEST(DielectricBsdf, IndexMatchedPassesStraightThrough) {
   const auto bsdf = test::make_bsdf(
       "<bsdf type='dielectric'><string name='int_ior' value='water'/><string name='ext_ior' value='water'/></bsdf>");

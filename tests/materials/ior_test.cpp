@@ -33,12 +33,17 @@ TEST(Ior, BadValuesNameTheLine) {
       testing::ThrowsMessage<SceneError>(testing::HasSubstr(
           "test.xml:4: parameter 'int_ior' of bsdf 'ior_reader': unknown index of refraction 'glass' (known: "
           "vacuum")));
-  EXPECT_THAT(
-      [] {
-        read({ValueKind::Float, 0.5, {"test.xml", 5}});
-      },
-      testing::ThrowsMessage<SceneError>(testing::HasSubstr("must be at least 1")));
+  for (const double bad : {0.0, -1.5})
+    EXPECT_THAT(
+        [bad] {
+          read({ValueKind::Float, bad, {"test.xml", 5}});
+        },
+        testing::ThrowsMessage<SceneError>(testing::HasSubstr("must be positive")));
 }
+
+// Mitsuba takes any positive index (an air bubble's interior in ice is 0.763
+// relative to the ice around it).
+TEST(Ior, IndicesBelowOneAreAccepted) { EXPECT_FLOAT_EQ(read({ValueKind::Float, 0.763, {"test.xml", 5}}), 0.763f); }
 
 }  // namespace
 }  // namespace caustica
