@@ -12,6 +12,7 @@
 #include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
+#include "core/registry/file_resolver.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -47,7 +48,13 @@ PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
 // Instantiates plugins from nodes, each object once, resolving <ref> by id.
 class Instantiator {
  public:
-  Instantiator(const XmlNode& root, Vec3d render_origin) : render_origin_(render_origin) { collect_ids(root, true); }
+  Instantiator(const XmlNode& root, Vec3d render_origin, const std::string& source)
+      : render_origin_(render_origin), resolver_(std::filesystem::path(source).parent_path()) {
+    collect_ids(root, true);
+    // The reader has checked each <path> and replaced its value by the folder found.
+    for (const XmlNode& node : root.children)
+      if (node.tag == "path") resolver_.add_folder(*node.attribute("value"));
+  }
 
   ObjectValue build(const XmlNode& node) {
     // Nested objects and chains of references both recurse through here.
@@ -106,6 +113,7 @@ class Instantiator {
     Properties props(*info, node.where);
     props.set_warnings(&warnings);
     props.set_render_origin(render_origin_);
+    props.set_resolver(&resolver_);
     for (const XmlNode& child : node.children) add_child(props, child);
 
     std::shared_ptr<Plugin> plugin;
@@ -130,7 +138,7 @@ class Instantiator {
 
   void add_child(Properties& props, const XmlNode& child) {
     if (child.tag == "spectrum" || child.tag == "blackbody") {
-      props.set(required_attribute(child, "name"), parse_spectrum_element(child));
+      props.set(required_attribute(child, "name"), parse_spectrum_element(child, resolver_));
     } else if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
       props.set(required_attribute(child, "name"), parse_value_element(child, kind->second));
     } else if (child.tag == "transform") {
@@ -170,6 +178,7 @@ class Instantiator {
   }
 
   Vec3d render_origin_;
+  FileResolver resolver_;
   int depth_ = 0;
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
@@ -205,12 +214,13 @@ Vec3d camera_position(const XmlNode& root) {
 LoadedScene instantiate(const XmlNode& root, const std::string& source,
                         const std::vector<std::string>& unused_defines = {}) {
   const Vec3d origin = camera_position(root);
-  Instantiator inst(root, origin);
+  Instantiator inst(root, origin, source);
   std::vector<std::shared_ptr<Shape>> shapes;
   std::shared_ptr<Sensor> sensor;
   std::shared_ptr<Integrator> integrator;
   std::shared_ptr<ToneOperator> tone_operator;
   for (const XmlNode& node : root.children) {
+    if (node.tag == "path") continue;
     if (!kObjectTags.count(node.tag) && node.tag != "ref")
       throw SceneError(node.where, "unexpected <" + node.tag + "> at the top level of a scene");
     if (node.tag == "ref") throw SceneError(node.where, "<ref> must be nested in an object");

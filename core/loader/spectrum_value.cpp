@@ -28,7 +28,7 @@ PropertyValue from_blackbody(const XmlNode& node, double kelvin, double scale) {
 
 }  // namespace
 
-PropertyValue parse_spectrum_element(const XmlNode& node) {
+PropertyValue parse_spectrum_element(const XmlNode& node, const FileResolver& files) {
   if (node.tag == "blackbody") {
     node.check_attributes({"name", "temperature", "multiplier", "scale"});
     const std::string* t = node.attribute("temperature");
@@ -53,9 +53,7 @@ PropertyValue parse_spectrum_element(const XmlNode& node) {
   node.check_attributes({"name", "value", "filename"});
   try {
     if (const std::string* file = node.attribute("filename")) {
-      std::filesystem::path path = *file;
-      if (path.is_relative()) path = std::filesystem::path(node.where.file).parent_path() / path;
-      return rgb(node, spectrum_to_rgb(read_spd_file(path)));
+      return rgb(node, spectrum_to_rgb(read_spd_file(files.resolve(*file, node.where.file))));
     }
     const std::string* text = node.attribute("value");
     if (!text) throw SceneError(node.where, "<spectrum> needs a 'value' or a 'filename' attribute");

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/registry/file_resolver.h"
+
 namespace caustica {
 namespace {
 
@@ -111,7 +113,8 @@ struct FileContext {
 // Parameters are shared across included files, so one reader serves the whole tree.
 class Reader {
  public:
-  explicit Reader(const Defines& defines) : params_(defines), defines_(defines) {}
+  Reader(const Defines& defines, const fs::path& main_file)
+      : params_(defines), defines_(defines), resolver_(main_file.parent_path()) {}
 
   // The names -D defined that no $name has used so far.
   std::vector<std::string> unused_defines() const {
@@ -217,6 +220,9 @@ class Reader {
         if (!is_root) throw SceneError(ctx.at(child), "<default> must be a direct child of <scene>");
       } else if (tag == "include") {
         splice_include(child, ctx, node.children);
+      } else if (tag == "path") {
+        if (!is_root) throw SceneError(ctx.at(child), "<path> must be a direct child of <scene>");
+        node.children.push_back(search_folder(convert(child, ctx, depth + 1)));
       } else {
         node.children.push_back(convert(child, ctx, depth + 1));
       }
@@ -225,11 +231,25 @@ class Reader {
     return node;
   }
 
+  // A <path value="folder"/>: later includes, and every file the scene
+  // names, are looked for there too. Its value becomes the folder found.
+  XmlNode search_folder(XmlNode path) {
+    path.check_attributes({"value"});
+    const std::string* value = path.attribute("value");
+    if (!value) throw SceneError(path.where, "<path> needs a 'value' attribute");
+    const fs::path folder = resolver_.resolve(*value, path.where.file);
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) throw SceneError(path.where, "<path> '" + folder.string() + "' is not a folder");
+    resolver_.add_folder(folder);
+    path.attributes = {{"value", folder.string()}};
+    return path;
+  }
+
   void splice_include(const pugi::xml_node& include, const FileContext& ctx, std::vector<XmlNode>& out) {
     SourceLocation where = ctx.at(include);
     pugi::xml_attribute filename = include.attribute("filename");
     if (!filename) throw SceneError(where, "<include> needs a 'filename' attribute");
-    fs::path target = (ctx.path.parent_path() / substitute(filename.value(), where)).lexically_normal();
+    fs::path target = resolver_.resolve(substitute(filename.value(), where), ctx.path);
 
     fs::path identity = identity_of(target);
     auto open = std::find_if(open_files_.begin(), open_files_.end(),
@@ -248,6 +268,7 @@ class Reader {
   const Defines& defines_;
   std::set<std::string> used_;
   std::vector<std::pair<fs::path, std::string>> open_files_;  // identity, name for messages
+  FileResolver resolver_;
 };
 
 }  // namespace
@@ -270,7 +291,7 @@ std::string camel_to_snake(std::string_view name) {
 
 XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines,
                        std::vector<std::string>* unused_defines) {
-  Reader reader(defines);
+  Reader reader(defines, file);
   XmlNode root = reader.read_file(file, {file.string(), 0}, "scene file");
   if (unused_defines) *unused_defines = reader.unused_defines();
   return root;
@@ -279,7 +300,7 @@ XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::st
 XmlNode read_scene_xml_string(std::string_view text, const std::filesystem::path& file_for_messages,
                               const std::map<std::string, std::string>& defines,
                               std::vector<std::string>* unused_defines) {
-  Reader reader(defines);
+  Reader reader(defines, file_for_messages);
   XmlNode root = reader.read_text(text, file_for_messages);
   if (unused_defines) *unused_defines = reader.unused_defines();
   return root;

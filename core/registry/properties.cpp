@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/registry/file_resolver.h"
+
 namespace caustica {
 
 namespace {
@@ -150,6 +152,7 @@ std::vector<std::pair<std::string, std::string>> Properties::effective_parameter
 std::filesystem::path Properties::get_path(const std::string& name) const {
   const PropertyValue v = value(name, ParamType::String);
   const std::filesystem::path file = std::get<std::string>(v.value);
+  if (files_) return files_->resolve(file, v.where.file);
   if (file.is_absolute()) return file;
   return std::filesystem::path(v.where.file).parent_path() / file;
 }

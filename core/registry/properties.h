@@ -13,6 +13,8 @@
 
 namespace caustica {
 
+class FileResolver;
+
 // The parameters and nested objects handed to one plugin's constructor.
 // Getters fall back to the default the plugin declared, so a default is
 // written once, in the registration.
@@ -42,7 +44,8 @@ class Properties {
   int64_t get_int_or(const std::string& name, int64_t fallback) const;
   float get_float(const std::string& name) const;
   std::string get_string(const std::string& name) const;
-  // A string naming a file, resolved against the folder of the scene file it was written in.
+  // A string naming a file, found by the resolver set (else beside the scene
+  // file it was written in).
   std::filesystem::path get_path(const std::string& name) const;
   Color get_color(const std::string& name) const;
   // In double: a point far from the origin keeps its precision until
@@ -87,6 +90,7 @@ class Properties {
   void warn(const std::string& name, const std::string& problem) const;
   void set_warnings(std::vector<std::string>* warnings) { warnings_ = warnings; }
   void set_render_origin(Vec3d origin) { render_origin_ = origin; }
+  void set_resolver(const FileResolver* files) { files_ = files; }
 
  private:
   const PropertyValue* find(const std::string& name) const;
@@ -98,6 +102,7 @@ class Properties {
   mutable std::vector<std::pair<std::string, std::string>> read_;  // effective values, as the getters returned them
   std::vector<std::string>* warnings_ = nullptr;
   Vec3d render_origin_;
+  const FileResolver* files_ = nullptr;
   void record(const std::string& name, std::string value) const;
 };
 

@@ -386,6 +386,40 @@ TEST(SceneLoader, ValuesAsExportersWriteThem) {
               HasSubstr("cannot parse '++1' as float"));
 }
 
+// Files are found as Mitsuba finds them too: along <path> folders (for
+// includes and for everything named), and beside the main scene when an
+// included fragment names them, as well as beside the naming file.
+TEST(SceneLoader, FilesAreFoundAlongPathsAndBesideTheMainScene) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "caustica_paths";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "assets");
+  fs::create_directories(dir / "parts");
+  fs::create_directories(dir / "meshes");
+  const std::string triangle =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::ofstream(dir / "assets" / "in_assets.ply") << triangle;
+  std::ofstream(dir / "meshes" / "beside_main.ply") << triangle;
+  std::ofstream(dir / "assets" / "light.xml")
+      << "<scene version='3.0.0'><emitter type='point'><rgb name='intensity' value='1'/></emitter></scene>";
+  std::ofstream(dir / "parts" / "fragment.xml")
+      << "<scene version='3.0.0'><shape type='ply'><string name='filename' value='meshes/beside_main.ply'/>"
+         "</shape></scene>";
+  std::ofstream(dir / "main.xml")
+      << "<scene version='3.0.0'><path value='assets'/><include filename='light.xml'/>"
+         "<include filename='parts/fragment.xml'/>"
+         "<shape type='ply'><string name='filename' value='in_assets.ply'/></shape></scene>";
+  const LoadedScene scene = load_scene(dir / "main.xml");
+  EXPECT_EQ(scene->shapes().size(), 2u);
+  EXPECT_EQ(scene->emitters().size(), 1u);
+
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<path value='nowhere'/></scene>", (dir / "bad.xml").string()),
+              HasSubstr("bad.xml:2: <path> '" + (dir / "nowhere").string() + "' is not a folder"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<shape type='cube'>\n<path value='assets'/></shape></scene>"),
+              HasSubstr("test.xml:3: <path> must be a direct child of <scene>"));
+}
+
 TEST(SceneLoader, MirroredCameraIsAccepted) {
   EXPECT_NO_THROW(
       test::scene_from_xml("<scene version='3.0.0'><sensor type='perspective'><transform "
