@@ -1,0 +1,166 @@
+// envmap: an environment given by a latitude-longitude image (EXR, HDR, PNG,
+// ... through OpenImageIO), y up as in Mitsuba: the image's top row looks
+// along +y, its left edge along -z, its centre column along +z, and u grows
+// with atan2(x, -z).
+// Each texel's radiance is constant over it; directions are sampled in
+// proportion to luminance times sin(theta), the texels' solid angle.
+//
+//   <emitter type="envmap">
+//       <string name="filename" value="sky.exr"/>
+//       <float name="scale" value="2"/>
+//       <transform name="to_world"><rotate y="1" angle="90"/></transform>
+//   </emitter>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "core/image/image_input.h"
+#include "core/lights/emitter.h"
+#include "core/math/constants.h"
+#include "core/math/frame.h"
+#include "core/registry/properties.h"
+#include "core/sampling/piecewise_constant_2d.h"
+#include "core/sampling/warp.h"
+
+namespace caustica {
+namespace {
+
+class EnvmapEmitter final : public Emitter {
+ public:
+  explicit EnvmapEmitter(const Properties& props) {
+    // Only the rotation matters to directions; the render origin's
+    // translation falls out of vector().
+    to_world_ = props.get_transform("to_world");
+    to_local_ = to_world_.inverse();
+    const float scale = props.get_float("scale");
+    if (!(scale >= 0 && std::isfinite(scale))) throw props.error("scale", "must be finite and not negative");
+    const auto file = props.get_path("filename");
+    Image image;
+    try {
+      image = read_image(file);
+    } catch (const std::exception& e) {
+      throw props.error("filename", e.what());
+    }
+    width_ = image.width;
+    height_ = image.height;
+    const size_t channels = image.channels.size();
+    const bool grey = channels < 3;
+    texels_.resize(size_t(width_) * height_);
+    std::vector<float> weights(texels_.size());
+    for (int y = 0; y < height_; ++y) {
+      const float sin_theta = std::sin((float(y) + 0.5f) * kPi / float(height_));
+      for (int x = 0; x < width_; ++x) {
+        const size_t i = size_t(y) * width_ + x;
+        const float* p = &image.pixels[i * channels];
+        const Color c = (grey ? Color(p[0]) : Color(p[0], p[1], p[2])) * scale;
+        if (!std::isfinite(c.r + c.g + c.b) || c.r < 0 || c.g < 0 || c.b < 0)
+          throw props.error("filename", "'" + file.string() + "' has a negative or non-finite value at pixel (" +
+                                            std::to_string(x) + ", " + std::to_string(y) + ")");
+        texels_[i] = c;
+        weights[i] = c.luminance() * sin_theta;
+      }
+    }
+    for (int y = 0; y < height_; ++y) {
+      // The solid angle of a texel of row y.
+      const double omega = (2 * M_PI / width_) * (std::cos(M_PI * y / height_) - std::cos(M_PI * (y + 1) / height_));
+      for (int x = 0; x < width_; ++x) radiant_ += texels_[size_t(y) * width_ + x] * float(omega);
+    }
+    bool any = false;
+    for (float w : weights) any = any || w > 0;
+    if (any) distribution_.emplace(weights, width_, height_);
+  }
+
+  void prepare(const Bounds3& bounds) override {
+    if (bounds.empty()) return;
+    center_ = bounds.center();
+    radius_ = std::max(length(bounds.hi - center_), 1e-3f) * 1.01f;
+  }
+
+  std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const override {
+    if (!distribution_) return std::nullopt;
+    float pdf_uv = 0;
+    const Vec2 uv = distribution_->sample(u, &pdf_uv);
+    const Vec3 wi = to_world_direction(uv);
+    // The density pdf_Li gives for wi, so that MIS weights agree exactly.
+    const float pdf = pdf_direction(wi);
+    if (!(pdf > 0)) return std::nullopt;
+    return LiSample{wi, texel(uv), pdf, false, ref.p + wi * (2 * radius_), {}, {}, true};
+  }
+
+  float pdf_Li(const ReferencePoint&, Vec3 wi, const SurfaceInteraction&) const override { return pdf_direction(wi); }
+
+  Color Le_infinite(Vec3 d) const override { return texel(to_uv(d)); }
+
+  // Emitted rays start on a disk facing the sampled direction, outside the
+  // scene's bounding sphere, so every point of the scene is reached.
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
+    if (!distribution_) return std::nullopt;
+    float pdf_uv = 0;
+    const Vec2 uv = distribution_->sample(u_dir, &pdf_uv);
+    const Vec3 d = -to_world_direction(uv);
+    const float pdf_dir = pdf_direction(-d);
+    if (!(pdf_dir > 0)) return std::nullopt;
+    const Frame frame = Frame::from_normal(d);
+    const Vec2 disk = square_to_uniform_disk_concentric(u_pos);
+    const Vec3 o = center_ - d * radius_ + (frame.s * disk.x + frame.t * disk.y) * radius_;
+    return LeSample{{o, d, kInfinity}, {}, texel(uv), 1 / (kPi * radius_ * radius_), pdf_dir, false};
+  }
+
+  void pdf_Le(const Ray& ray, Vec3, float* pdf_pos, float* pdf_dir) const override {
+    *pdf_pos = 1 / (kPi * radius_ * radius_);
+    *pdf_dir = pdf_direction(-ray.d);
+  }
+
+  // Radiance times the solid angle of each texel, through the disk.
+  Color power() const override { return radiant_ * (kPi * radius_ * radius_); }
+  bool is_infinite() const override { return true; }
+
+ private:
+  // The direction (toward the environment) of a point of the image.
+  Vec3 to_world_direction(Vec2 uv) const {
+    const float phi = uv.x * 2 * kPi, theta = uv.y * kPi;
+    const float sin_theta = std::sin(theta);
+    return normalize(to_world_.vector({std::sin(phi) * sin_theta, std::cos(theta), -std::cos(phi) * sin_theta}));
+  }
+  Vec2 to_uv(Vec3 d_world) const {
+    const Vec3 d = normalize(to_local_.vector(d_world));
+    float u = std::atan2(d.x, -d.z) * kInv2Pi;
+    if (u < 0) u += 1;
+    // theta from atan2: accurate near the poles, where acos is not.
+    return {u, std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y) * kInvPi};
+  }
+  Color texel(Vec2 uv) const {
+    const int x = std::clamp(int(uv.x * float(width_)), 0, width_ - 1);
+    const int y = std::clamp(int(uv.y * float(height_)), 0, height_ - 1);
+    return texels_[size_t(y) * width_ + x];
+  }
+  // A density over the image's [0,1)^2 as one over solid angle:
+  // d omega = 2 pi^2 sin(theta) du dv.
+  float pdf_direction(Vec3 wi) const {
+    if (!distribution_) return 0;
+    const Vec3 d = normalize(to_local_.vector(wi));
+    const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
+    return sin_theta > 0 ? distribution_->pdf(to_uv(wi)) / (2 * kPi * kPi * sin_theta) : 0;
+  }
+
+  Transform to_world_, to_local_;
+  int width_ = 0, height_ = 0;
+  std::vector<Color> texels_;
+  std::optional<PiecewiseConstant2D> distribution_;
+  Color radiant_;  // radiance integrated over the sphere
+  Vec3 center_;
+  float radius_ = 1;
+};
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(EnvmapEmitter, "emitter", "envmap",
+                         {{"filename", ParamType::String, std::nullopt,
+                           "latitude-longitude image, relative to the scene file"},
+                          {"scale", ParamType::Float, "1", "factor on the image's radiance"},
+                          {"to_world", ParamType::Transform, "", "rotation of the environment"}},
+                         {});
+
+}  // namespace caustica
