@@ -49,14 +49,14 @@ class ConductorBsdf final : public DeltaBsdf {
   std::shared_ptr<Texture> specular_reflectance_;
 };
 
+std::vector<ParamSpec> params() {
+  auto p = conductor_ior_params();
+  p.push_back({"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"});
+  return p;
+}
+
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(
-    ConductorBsdf, "bsdf", "conductor",
-    {{"material", ParamType::String, "none", "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
-     {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
-     {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
-     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"}},
-    {});
+CAUSTICA_REGISTER_PLUGIN(ConductorBsdf, "bsdf", "conductor", params(), {});
 
 }  // namespace caustica

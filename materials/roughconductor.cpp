@@ -101,11 +101,9 @@ class RoughConductorBsdf final : public Bsdf {
 
 std::vector<ParamSpec> params() {
   auto p = microfacet_params(true);
-  p.insert(p.end(), {{"material", ParamType::String, "none",
-                      "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
-                     {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
-                     {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
-                     {"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"},
+  const auto ior = conductor_ior_params();
+  p.insert(p.end(), ior.begin(), ior.end());
+  p.insert(p.end(), {{"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"},
                      {"sample_visible", ParamType::Boolean, "true", "sample only the facet normals visible from wo"}});
   return p;
 }

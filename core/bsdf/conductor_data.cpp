@@ -1,5 +1,7 @@
 #include "core/bsdf/conductor_data.h"
 
+#include <cmath>
+
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -34,7 +36,9 @@ std::vector<std::string> conductor_names() {
   return names;
 }
 
-ConductorIor conductor_ior(const Properties& props) {
+namespace {
+
+ConductorIor absolute_ior(const Properties& props) {
   const std::string material = props.get_string("material");
   if (material == "none") {
     const ConductorIor ior{props.get_color("eta"), props.get_color("k")};
@@ -51,6 +55,23 @@ ConductorIor conductor_ior(const Properties& props) {
     throw props.error("material",
                       "unknown conductor '" + material + "' (known: none, " + join_names(conductor_names()) + ")");
   return *known;
+}
+
+}  // namespace
+
+ConductorIor conductor_ior(const Properties& props) {
+  const ConductorIor ior = absolute_ior(props);
+  const float outside = props.get_float("ext_eta");
+  if (!(outside > 0 && std::isfinite(outside))) throw props.error("ext_eta", "must be positive");
+  return {ior.eta / outside, ior.k / outside};
+}
+
+std::vector<ParamSpec> conductor_ior_params() {
+  return {
+      {"material", ParamType::String, "none", "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
+      {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
+      {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
+      {"ext_eta", ParamType::Float, "1", "index of the outside, which eta and k are divided by (Mitsuba 0.x)"}};
 }
 
 }  // namespace caustica

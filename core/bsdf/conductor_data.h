@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/math/color.h"
+#include "core/registry/param_spec.h"
 
 namespace caustica {
 
@@ -25,5 +26,8 @@ std::vector<std::string> conductor_names();
 // "none" and `eta` and `k` give the index (by default eta = 0, k = 1, a
 // perfect mirror). Giving both is an error, as is an unknown name.
 ConductorIor conductor_ior(const Properties& props);
+// The parameters conductor_ior reads: material, eta, k, and ext_eta (the
+// outside's index, Mitsuba 0.x's extEta), which eta and k are relative to.
+std::vector<ParamSpec> conductor_ior_params();
 
 }  // namespace caustica

@@ -212,7 +212,8 @@ Vec3d camera_position(const XmlNode& root) {
 }
 
 LoadedScene instantiate(const XmlNode& root, const std::string& source,
-                        const std::vector<std::string>& unused_defines = {}) {
+                        const std::vector<std::string>& unused_defines = {},
+                        const std::vector<std::string>& upgrade_notes = {}) {
   const Vec3d origin = camera_position(root);
   Instantiator inst(root, origin, source);
   std::vector<std::shared_ptr<Shape>> shapes;
@@ -248,6 +249,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   scene->set_features(analyze_scene(*scene, inst.textures > 0));
   if (auto warning = clip_warning(scene->sensor().clip_planes(), scene->bounds()))
     inst.warnings.push_back(source + ": " + *warning);
+  inst.warnings.insert(inst.warnings.begin(), upgrade_notes.begin(), upgrade_notes.end());
   for (const std::string& name : unused_defines)
     inst.warnings.push_back(source + ": -D " + name + " is not used by the scene (no $" + name + " in it)");
   return {std::move(scene), std::move(integrator), std::move(inst.integrator_values), std::move(tone_operator),
@@ -257,16 +259,16 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
 }  // namespace
 
 LoadedScene load_scene(const std::filesystem::path& file, const Defines& defines) {
-  std::vector<std::string> unused;
-  XmlNode root = read_scene_xml(file, defines, &unused);
-  return instantiate(root, file.string(), unused);
+  std::vector<std::string> unused, notes;
+  XmlNode root = read_scene_xml(file, defines, &unused, &notes);
+  return instantiate(root, file.string(), unused, notes);
 }
 
 LoadedScene load_scene_string(std::string_view xml, const std::filesystem::path& file_for_messages,
                               const Defines& defines) {
-  std::vector<std::string> unused;
-  XmlNode root = read_scene_xml_string(xml, file_for_messages, defines, &unused);
-  return instantiate(root, file_for_messages.string(), unused);
+  std::vector<std::string> unused, notes;
+  XmlNode root = read_scene_xml_string(xml, file_for_messages, defines, &unused, &notes);
+  return instantiate(root, file_for_messages.string(), unused, notes);
 }
 
 Defines parse_defines(const std::vector<std::string>& items) {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/loader/upgrade_0x.h"
 #include "core/registry/file_resolver.h"
 
 namespace caustica {
@@ -115,6 +116,9 @@ class Reader {
  public:
   Reader(const Defines& defines, const fs::path& main_file)
       : params_(defines), defines_(defines), resolver_(main_file.parent_path()) {}
+
+  // What upgrading 0.x files dropped, one line each.
+  const std::vector<std::string>& upgrade_notes() const { return notes_; }
 
   // The names -D defined that no $name has used so far.
   std::vector<std::string> unused_defines() const {
@@ -228,6 +232,7 @@ class Reader {
       }
     }
     if (was_ldrfilm) drop_ldrfilm_display_settings(node);
+    if (ctx.upgrade && node.attribute("type")) upgrade_object_from_0x(node, notes_);
     return node;
   }
 
@@ -269,6 +274,7 @@ class Reader {
   std::set<std::string> used_;
   std::vector<std::pair<fs::path, std::string>> open_files_;  // identity, name for messages
   FileResolver resolver_;
+  std::vector<std::string> notes_;
 };
 
 }  // namespace
@@ -290,19 +296,21 @@ std::string camel_to_snake(std::string_view name) {
 }
 
 XmlNode read_scene_xml(const std::filesystem::path& file, const std::map<std::string, std::string>& defines,
-                       std::vector<std::string>* unused_defines) {
+                       std::vector<std::string>* unused_defines, std::vector<std::string>* upgrade_notes) {
   Reader reader(defines, file);
   XmlNode root = reader.read_file(file, {file.string(), 0}, "scene file");
   if (unused_defines) *unused_defines = reader.unused_defines();
+  if (upgrade_notes) *upgrade_notes = reader.upgrade_notes();
   return root;
 }
 
 XmlNode read_scene_xml_string(std::string_view text, const std::filesystem::path& file_for_messages,
                               const std::map<std::string, std::string>& defines,
-                              std::vector<std::string>* unused_defines) {
+                              std::vector<std::string>* unused_defines, std::vector<std::string>* upgrade_notes) {
   Reader reader(defines, file_for_messages);
   XmlNode root = reader.read_text(text, file_for_messages);
   if (unused_defines) *unused_defines = reader.unused_defines();
+  if (upgrade_notes) *upgrade_notes = reader.upgrade_notes();
   return root;
 }
 

@@ -135,6 +135,50 @@ TEST(SceneLoader, ZeroPointSixSceneIsUpgraded) {
   EXPECT_THAT(scene.integrator->describe(), StartsWith("path max_depth=3"));
 }
 
+// What 0.x names that the plugin decides: renamed (diffuse's
+// diffuseReflectance, sppm's photonCount and initialRadius, a bitmap's
+// uscale/voffset as to_uv, a conductor's extEta honoured), or dropped with a
+// line saying so.
+TEST(SceneLoader, ZeroPointSixParametersAreUpgradedOrSaidToBeIgnored) {
+  const auto checker = std::filesystem::temp_directory_path() / "caustica_upgrade.ppm";
+  {
+    // 2x1: black then white, read raw.
+    std::ofstream out(checker, std::ios::binary);
+    out << "P6\n2 1\n255\n";
+    out.put(0).put(0).put(0).put(char(255)).put(char(255)).put(char(255));
+  }
+  const auto scene = load_scene_string(
+      "<scene version='0.6.0'>\n<integrator type='sppm'><integer name='photonCount' value='5000'/>"
+      "<float name='initialRadius' value='0.25'/>\n<integer name='maxPasses' value='4'/></integrator>\n"
+      "<shape type='sphere'><bsdf type='diffuse'><spectrum name='diffuseReflectance' value='0.3'/></bsdf>"
+      "<emitter type='area'>\n<float name='samplingWeight' value='2'/><rgb name='radiance' value='1'/>"
+      "</emitter></shape>\n<shape type='sphere'><bsdf type='conductor'><rgb name='eta' value='2'/>"
+      "<rgb name='k' value='0'/><float name='extEta' value='2'/></bsdf></shape>\n"
+      "<shape type='sphere'><bsdf type='diffuse'><texture type='bitmap' name='reflectance'>"
+      "<string name='filename' value='" +
+          checker.string() +
+          "'/><boolean name='raw' value='true'/><string name='filterType' value='nearest'/>"
+          "<float name='uscale' value='0.5'/><float name='voffset' value='0.25'/></texture></bsdf></shape></scene>",
+      "old.xml");
+  EXPECT_THAT(scene.integrator->describe(), testing::HasSubstr("photons=5000 radius=0.250000"));
+  EXPECT_THAT(scene.warnings,
+              testing::ElementsAre(
+                  "old.xml:3: parameter 'max_passes' of integrator 'sppm' (Mitsuba 0.x) is ignored: sppm runs one "
+                  "iteration per sample per pixel",
+                  "old.xml:5: parameter 'sampling_weight' of emitter 'area' (Mitsuba 0.x) is ignored: emitters are "
+                  "chosen in proportion to their power"));
+  const BsdfContext ctx;
+  EXPECT_FLOAT_EQ(scene->shapes()[0]->bsdf()->albedo(ctx, {0, 0, 1}).g, 0.3f);
+  // eta 2 relative to 2 is index-matched: nothing reflects.
+  EXPECT_NEAR(scene->shapes()[1]->bsdf()->albedo(ctx, {0, 0, 1}).r, 0, 1e-6);
+  // u 0.75 scaled by 0.5 reads the black texel; unscaled it would read the white one.
+  BsdfContext at;
+  at.uv = {0.75f, 0.5f};
+  EXPECT_EQ(scene->shapes()[2]->bsdf()->albedo(at, {0, 0, 1}).r, 0);
+  at.uv = {1.5f, 0.5f};
+  EXPECT_GT(scene->shapes()[2]->bsdf()->albedo(at, {0, 0, 1}).r, 0.9f);
+}
+
 struct BadInput {
   const char* what;
   std::string xml;

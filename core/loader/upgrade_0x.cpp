@@ -1,0 +1,87 @@
+#include "core/loader/upgrade_0x.h"
+
+#include <algorithm>
+
+namespace caustica {
+namespace {
+
+struct Rename {
+  const char* tag;
+  const char* type;  // "" for any
+  const char* from;
+  const char* to;
+};
+
+const Rename kRenames[] = {{"bsdf", "diffuse", "diffuse_reflectance", "reflectance"},
+                           {"integrator", "sppm", "photon_count", "photons"},
+                           {"integrator", "sppm", "initial_radius", "radius"}};
+
+struct Ignored {
+  const char* tag;
+  const char* name;
+  const char* why;
+};
+
+const Ignored kIgnored[] = {
+    {"integrator", "strict_normals", "caustica's paths always treat shading normals consistently"},
+    {"integrator", "max_passes", "sppm runs one iteration per sample per pixel"},
+    {"integrator", "granularity", "work is scheduled by tiles"},
+    {"integrator", "direct_samples", "direct light is sampled once per vertex"},
+    {"integrator", "glossy_samples", "glossy lobes are sampled once per vertex"},
+    {"integrator", "light_image", "bdpt always joins light paths to the camera"},
+    {"integrator", "sample_direct", "bdpt always samples every strategy"},
+    {"emitter", "sampling_weight", "emitters are chosen in proportion to their power"},
+    {"bsdf", "preserve_colors", "the material's colours are used as given"}};
+
+bool has_name(const XmlNode& child, const char* name) {
+  const std::string* n = child.attribute("name");
+  return n && *n == name;
+}
+
+// 0.x bitmaps take uv = uv * (uscale, vscale) + (uoffset, voffset);
+// caustica's take a to_uv transform.
+void upgrade_uv_transform(XmlNode& bitmap) {
+  std::string scale[2] = {"1", "1"}, offset[2] = {"0", "0"};
+  bool any = false;
+  std::erase_if(bitmap.children, [&](const XmlNode& child) {
+    const char* names[] = {"uscale", "vscale", "uoffset", "voffset"};
+    for (int i = 0; i < 4; ++i)
+      if (has_name(child, names[i]) && child.attribute("value")) {
+        (i < 2 ? scale : offset)[i % 2] = *child.attribute("value");
+        return any = true;
+      }
+    return false;
+  });
+  if (!any) return;
+  XmlNode transform{"transform", {{"name", "to_uv"}}, {}, bitmap.where};
+  transform.children.push_back({"scale", {{"x", scale[0]}, {"y", scale[1]}}, {}, bitmap.where});
+  transform.children.push_back({"translate", {{"x", offset[0]}, {"y", offset[1]}}, {}, bitmap.where});
+  bitmap.children.push_back(std::move(transform));
+}
+
+}  // namespace
+
+void upgrade_object_from_0x(XmlNode& object, std::vector<std::string>& notes) {
+  const std::string* type_attribute = object.attribute("type");
+  const std::string type = type_attribute ? *type_attribute : "";
+  for (XmlNode& child : object.children) {
+    std::string* name = nullptr;
+    for (auto& [key, value] : child.attributes)
+      if (key == "name") name = &value;
+    if (!name) continue;
+    for (const Rename& r : kRenames)
+      if (object.tag == r.tag && (!*r.type || type == r.type) && *name == r.from) *name = r.to;
+  }
+  if (object.tag == "texture" && type == "bitmap") upgrade_uv_transform(object);
+  std::erase_if(object.children, [&](const XmlNode& child) {
+    for (const Ignored& i : kIgnored)
+      if (object.tag == i.tag && has_name(child, i.name)) {
+        notes.push_back(child.where.str() + ": parameter '" + i.name + "' of " + object.tag + " '" + type +
+                        "' (Mitsuba 0.x) is ignored: " + i.why);
+        return true;
+      }
+    return false;
+  });
+}
+
+}  // namespace caustica
