@@ -17,7 +17,26 @@ void DevelopOptions::add_to(CLI::App& command) {
   command.add_option("--png-bits", png_bits_, "PNG bit depth, 8 (dithered) or 16")->check(CLI::IsMember({8, 16}));
 }
 
-Developer DevelopOptions::make(const std::shared_ptr<ToneOperator>& scene_default) const {
+namespace {
+
+// An ldrfilm's tone mapping as one of caustica's operators.
+std::shared_ptr<ToneOperator> ldr_tone_operator(const LdrDevelopment& d) {
+  const std::string name = d.tonemap == "reinhard" ? "reinhard" : "none";
+  const PluginInfo* info = Registry::instance().find("tonemap", name);
+  const SourceLocation where{"ldrfilm", 0};
+  Properties props(*info, where);
+  props.set("exposure", {ValueKind::Float, double(d.exposure), where});
+  if (name == "reinhard") {
+    props.set("key", {ValueKind::Float, double(d.key), where});
+    props.set("burn", {ValueKind::Float, double(d.burn), where});
+  }
+  return std::dynamic_pointer_cast<ToneOperator>(info->create(props));
+}
+
+}  // namespace
+
+Developer DevelopOptions::make(const std::shared_ptr<ToneOperator>& scene_default,
+                               const std::optional<LdrDevelopment>& ldr) const {
   std::shared_ptr<ToneOperator> op;
   if (!tonemap_.empty()) {
     const PluginInfo* info = Registry::instance().find("tonemap", tonemap_);
@@ -25,14 +44,19 @@ Developer DevelopOptions::make(const std::shared_ptr<ToneOperator>& scene_defaul
       throw std::invalid_argument("unknown tone operator '" + tonemap_ +
                                   "' (available: " + join_names(Registry::instance().names("tonemap")) + ")");
     op = Registry::instance().create_default<ToneOperator>("tonemap", tonemap_, {"--tonemap", 0});
+  } else if (scene_default) {
+    op = scene_default;
+  } else if (ldr) {
+    op = ldr_tone_operator(*ldr);
   } else {
-    op = scene_default ? scene_default
-                       : Registry::instance().create_default<ToneOperator>("tonemap", "none", {"--tonemap", 0});
+    op = Registry::instance().create_default<ToneOperator>("tonemap", "none", {"--tonemap", 0});
   }
   if (exposure_) op->set_exposure(*exposure_);
   const std::filesystem::path config =
       ocio_config_.empty() ? default_ocio_config() : std::filesystem::path(ocio_config_);
-  return Developer(op, DisplayTransform(config, display_, view_, look_));
+  std::optional<float> gamma;
+  if (ldr && ldr->gamma > 0 && display_.empty() && view_.empty()) gamma = ldr->gamma;
+  return Developer(op, DisplayTransform(config, display_, view_, look_), gamma);
 }
 
 }  // namespace caustica

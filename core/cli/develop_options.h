@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/color/developer.h"
+#include "core/film/film.h"
 
 namespace caustica {
 
@@ -15,9 +16,11 @@ namespace caustica {
 class DevelopOptions {
  public:
   void add_to(CLI::App& command);
-  // The --tonemap operator, else `scene_default`, else `none`; --exposure
-  // replaces the operator's own exposure.
-  Developer make(const std::shared_ptr<ToneOperator>& scene_default) const;
+  // The --tonemap operator, else `scene_default`, else the ldrfilm's
+  // development, else `none`; --exposure replaces the operator's own
+  // exposure, and --display or --view an ldrfilm's gamma.
+  Developer make(const std::shared_ptr<ToneOperator>& scene_default,
+                 const std::optional<LdrDevelopment>& ldr = std::nullopt) const;
   int png_bits() const { return png_bits_; }
 
  private:

@@ -106,9 +106,10 @@ int RenderCommand::run() const {
   const bool plain = exr.extension() != ".exr";
   if (plain && raw_sums_) throw std::invalid_argument("--raw-sums needs an .exr output, not " + exr.string());
   std::filesystem::path png = exr;
-  png.replace_extension(".png");
+  const auto& ldr = film.output().ldr;
+  png.replace_extension(ldr && ldr->jpeg ? ".jpg" : ".png");
   // Everything that can fail on bad options fails before the render.
-  const Developer developer = develop_.make(job.scene().tone_operator);
+  const Developer developer = develop_.make(job.scene().tone_operator, film.output().ldr);
 
   const std::string plan = job.plan();
   if (!quiet_ && !plan.empty()) {

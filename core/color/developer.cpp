@@ -26,7 +26,10 @@ std::vector<float> Developer::develop(const Image& image) const {
     for (size_t c = 0; c < 3; ++c)
       if (source[c] < nc) rgb[p * 3 + c] = image.pixels[p * nc + source[c]] * scale;
   op_->apply(rgb);
-  display_.apply(rgb, image.width, image.height);
+  if (gamma_)
+    for (float& v : rgb) v = std::pow(std::max(v, 0.0f), 1 / *gamma_);
+  else
+    display_.apply(rgb, image.width, image.height);
   // Display transforms do not clamp, and a studio config may produce NaN
   // from out-of-range input; neither may reach the quantiser.
   for (float& v : rgb) v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
@@ -34,8 +37,9 @@ std::vector<float> Developer::develop(const Image& image) const {
 }
 
 std::string Developer::describe() const {
-  std::string s = op_->describe() + " exposure=" + std::to_string(op_->exposure()) + " display=" + display_.display() +
-                  " view=" + display_.view();
+  std::string s = op_->describe() + " exposure=" + std::to_string(op_->exposure());
+  if (gamma_) return s + " gamma=" + std::to_string(*gamma_);
+  s += " display=" + display_.display() + " view=" + display_.view();
   if (!display_.look().empty()) s += " look=" + display_.look();
   return s;
 }

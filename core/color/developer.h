@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/color/display_transform.h"
@@ -11,12 +12,14 @@
 namespace caustica {
 
 // Turns a scene-referred render into display-referred pixels:
-// exposure (2^EV) -> tone operator -> OpenColorIO display/view -> clamp.
-// Quantisation (with dithering) happens when the PNG is written.
+// exposure (2^EV) -> tone operator -> OpenColorIO display/view -> clamp,
+// or, given a gamma, a plain power curve v^(1/gamma) in place of the
+// display transform (Mitsuba 0.x's ldrfilm). Quantisation (with dithering)
+// happens when the PNG is written.
 class Developer {
  public:
-  Developer(std::shared_ptr<ToneOperator> op, DisplayTransform display)
-      : op_(std::move(op)), display_(std::move(display)) {}
+  Developer(std::shared_ptr<ToneOperator> op, DisplayTransform display, std::optional<float> gamma = std::nullopt)
+      : op_(std::move(op)), display_(std::move(display)), gamma_(gamma) {}
 
   // Takes the image's R, G, B channels (else its first three, as for AOV
   // renders) as linear Rec.709; returns display-encoded RGB in [0, 1],
@@ -27,6 +30,7 @@ class Developer {
  private:
   std::shared_ptr<ToneOperator> op_;
   DisplayTransform display_;
+  std::optional<float> gamma_;
 };
 
 // Indices of the channels named R, G and B, else of the first three.

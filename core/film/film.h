@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/film/reconstruction_filter.h"
@@ -16,12 +17,28 @@ enum class FileFormat { OpenExr, Rgbe, Pfm };
 // always, with luminance (Y) or CIE XYZ beside it, and optionally alpha.
 enum class PixelFormat { Rgb, Luminance, Xyz };
 
+// How an ldrfilm develops its 8-bit image (Mitsuba 0.x's settings):
+// tonemap "gamma" (exposure only) or "reinhard" (key, burn), then a power
+// gamma, or sRGB's curve for -1.
+struct LdrDevelopment {
+  std::string tonemap = "gamma";
+  float gamma = -1, exposure = 0, key = 0.18f, burn = 0;
+  bool jpeg = false;
+};
+
 // How the film is written, as the scene asks.
 struct FilmOutput {
   FileFormat file = FileFormat::OpenExr;
   PixelFormat pixels = PixelFormat::Rgb;
   bool alpha = false;
   bool half_float = true;
+  std::optional<LdrDevelopment> ldr;  // for an ldrfilm
+};
+
+// The pixels a film has and renders.
+struct FilmGeometry {
+  Vec2i full, crop_offset, crop_size;
+  std::shared_ptr<ReconstructionFilter> filter;
 };
 
 // The film's settings as the scene gives them (hdrfilm); pixels accumulate
@@ -30,13 +47,12 @@ struct FilmOutput {
 // window's pixels into the whole film.
 class Film : public Plugin {
  public:
-  Film(Vec2i full_size, Vec2i crop_offset, Vec2i crop_size, std::shared_ptr<ReconstructionFilter> filter,
-       FilmOutput output)
-      : full_size_(full_size),
-        crop_offset_(crop_offset),
-        crop_size_(crop_size),
-        filter_(std::move(filter)),
-        output_(output) {}
+  Film(FilmGeometry geometry, FilmOutput output)
+      : full_size_(geometry.full),
+        crop_offset_(geometry.crop_offset),
+        crop_size_(geometry.crop_size),
+        filter_(std::move(geometry.filter)),
+        output_(std::move(output)) {}
 
   int width() const { return crop_size_.x; }
   int height() const { return crop_size_.y; }

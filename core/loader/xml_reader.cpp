@@ -74,25 +74,8 @@ void upgrade_from_0x(XmlNode& node) {
     node.tag = "lookat";
   else if (node.tag == "srgb")
     node.tag = "rgb";
-  for (auto& [key, value] : node.attributes) {
-    if (key == "name")
-      value = camel_to_snake(value);
-    else if (key == "type" && node.tag == "film" && value == "ldrfilm")
-      value = "hdrfilm";  // we always write HDR; tonemapping is a later step
-  }
-}
-
-// An 0.x ldrfilm becomes an hdrfilm; its display settings (tone mapping,
-// gamma, exposure, banner) have no counterpart there and are dropped, since
-// display-referred output is a separate stage of caustica's.
-void drop_ldrfilm_display_settings(XmlNode& film) {
-  static const char* const display_settings[] = {"tonemap_method", "gamma",  "exposure",          "key",
-                                                 "burn",           "banner", "high_quality_edges"};
-  std::erase_if(film.children, [](const XmlNode& child) {
-    const std::string* name = child.attribute("name");
-    return name &&
-           std::find(std::begin(display_settings), std::end(display_settings), *name) != std::end(display_settings);
-  });
+  for (auto& [key, value] : node.attributes)
+    if (key == "name") value = camel_to_snake(value);
 }
 
 // Identifies a file for include-cycle detection even when reached by different relative paths.
@@ -215,8 +198,6 @@ class Reader {
       node.attributes.emplace_back(attribute.name(), substitute(attribute.value(), node.where));
     }
     if (ctx.upgrade) upgrade_from_0x(node);
-    const bool was_ldrfilm = ctx.upgrade && element.name() == std::string_view("film") &&
-                             element.attribute("type").value() == std::string_view("ldrfilm");
     for (pugi::xml_node child : element.children()) {
       if (child.type() != pugi::node_element) continue;
       std::string_view tag = child.name();
@@ -231,7 +212,6 @@ class Reader {
         node.children.push_back(convert(child, ctx, depth + 1));
       }
     }
-    if (was_ldrfilm) drop_ldrfilm_display_settings(node);
     if (ctx.upgrade && node.attribute("type")) upgrade_object_from_0x(node, notes_);
     return node;
   }

@@ -138,6 +138,52 @@ TEST(FilmOutput, ACropWindowRendersOnlyItsPixels) {
   EXPECT_EQ(image.height, 6);
 }
 
+fs::path ldr_scene(const std::string& film_params) {
+  const fs::path path = temp_dir() / "ldr.xml";
+  std::ofstream(path) << "<scene version='3.0.0'><sensor type='perspective'><transform name='to_world'>"
+                         "<lookat origin='0, 0, 5' target='0, 0, 0' up='0, 1, 0'/></transform>"
+                         "<film type='ldrfilm'><integer name='width' value='16'/><integer name='height' value='12'/>"
+                      << film_params
+                      << "</film></sensor><shape type='sphere'/>"
+                         "<emitter type='constant'><rgb name='radiance' value='0.5, 1, 2'/></emitter></scene>";
+  return path;
+}
+
+// An ldrfilm develops its image itself: 2^exposure, then a power gamma.
+// The sky (0.5, 1, 2) at -2 stops and gamma 2.2 is (0.125, 0.25, 0.5)^(1/2.2)
+// = (0.3888, 0.5324, 0.7297), within the dithering's step of 8-bit.
+TEST(FilmOutput, AnLdrfilmDevelopsWithItsOwnExposureAndGamma) {
+  const fs::path out = temp_dir() / "ldr.exr";
+  const auto r = run_caustica(
+      "render " + ldr_scene("<float name='gamma' value='2.2'/><float name='exposure' value='-2'/>").string() +
+      " -q -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Read png = read(temp_dir() / "ldr.png");
+  ASSERT_EQ(png.channels.size(), 3u);
+  const double expected[3] = {0.3888, 0.5324, 0.7297};
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(png.at(0, 0, std::string(1, "RGB"[c])), expected[c], 1.5 / 255) << c;
+  auto exr = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(exr);
+  EXPECT_EQ(exr->spec().get_string_attribute("caustica:develop"), "none exposure=-2.000000 gamma=2.200000");
+}
+
+TEST(FilmOutput, AnLdrfilmCanToneMapByReinhardAndWriteJpeg) {
+  const fs::path out = temp_dir() / "reinhard.exr";
+  fs::remove(temp_dir() / "reinhard.jpg");
+  const auto r = run_caustica("render " +
+                              ldr_scene("<string name='tonemap_method' value='reinhard'/>"
+                                        "<float name='key' value='0.3'/><float name='burn' value='0.5'/>"
+                                        "<string name='file_format' value='jpeg'/>")
+                                  .string() +
+                              " -q -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(temp_dir() / "reinhard.jpg"));
+  auto exr = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(exr);
+  EXPECT_EQ(exr->spec().get_string_attribute("caustica:develop"),
+            "reinhard key=0.300000 white=0.000000 burn=0.500000 exposure=0.000000 display=sRGB view=Standard");
+}
+
 TEST(FilmOutput, OutputsThatCannotHoldTheRenderAreRefused) {
   const std::string scene = sky_scene("").string();
   EXPECT_THAT(run_caustica("render " + scene + " -o out.png").output,

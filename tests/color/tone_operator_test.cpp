@@ -76,6 +76,16 @@ TEST(ReinhardTonemap, KeyValueAndWhitePoint) {
   EXPECT_LT(rgb[3], rgb[6]);
 }
 
+// Burn b scales the brightest pixel's scaled luminance by (1 - b)^2 to get
+// the white point: at b = 0.5, a pixel a quarter as bright as the brightest
+// maps to exactly 1, and one an eighth as bright stays below it.
+TEST(ReinhardTonemap, BurnMovesTheWhitePointDown) {
+  auto rgb = grey({0.125f, 0.25f, 1.0f});
+  make("reinhard", {{"burn", 0.5}})->apply(rgb);
+  EXPECT_NEAR(rgb[3], 1.0f, 1e-5f);
+  EXPECT_LT(rgb[0], 0.99f);
+}
+
 TEST(ReinhardTonemap, KeepsHue) {
   // (Where a channel would exceed 1 it is clipped, which shifts hue; a far
   // white point keeps every channel below 1 here.)

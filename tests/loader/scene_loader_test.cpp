@@ -114,7 +114,7 @@ TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
       "<float name='exposure' value='-1'/></tonemap></scene>",
       "tonemap.xml");
   ASSERT_TRUE(scene.tone_operator);
-  EXPECT_EQ(scene.tone_operator->describe(), "reinhard key=0.300000 white=0.000000");
+  EXPECT_EQ(scene.tone_operator->describe(), "reinhard key=0.300000 white=0.000000 burn=0.000000");
   EXPECT_EQ(scene.tone_operator->exposure(), -1);
   EXPECT_FALSE(load_scene_string("<scene version='3.0.0'/>", "plain.xml").tone_operator);
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<tonemap type='reinhard'/>\n<tonemap type='none'/></scene>"),

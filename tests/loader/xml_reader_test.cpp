@@ -254,9 +254,10 @@ TEST(XmlReader, UpgradesMitsuba0xFiles) {
   EXPECT_EQ(sensor.children[1].children[0].tag, "lookat");
   EXPECT_EQ(sensor.children[1].children[0].where.line, 5);
   EXPECT_EQ(*sensor.children[2].children[0].attribute("name"), "sample_count");
-  EXPECT_EQ(*sensor.children[3].attribute("type"), "hdrfilm");
-  ASSERT_EQ(sensor.children[3].children.size(), 1u);  // gamma dropped, width kept
-  EXPECT_EQ(*sensor.children[3].children[0].attribute("name"), "width");
+  // ldrfilm stays a film of its own, its display settings with it.
+  EXPECT_EQ(*sensor.children[3].attribute("type"), "ldrfilm");
+  ASSERT_EQ(sensor.children[3].children.size(), 2u);
+  EXPECT_EQ(*sensor.children[3].children[0].attribute("name"), "gamma");
   const XmlNode& bsdf = root.children[2];
   EXPECT_EQ(*bsdf.children[0].attribute("name"), "int_ior");
   EXPECT_EQ(*bsdf.children[1].attribute("name"), "ext_ior");
