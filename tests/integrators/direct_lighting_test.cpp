@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "core/registry/properties.h"
 #include "core/render/pixel_integrator.h"
@@ -87,11 +88,9 @@ TEST(DirectLighting, SphereLightOnPlane) {
   }
 }
 
-// A tiny light far away (a sun-like cone of 1e-8 sr) keeps its precision:
-// the cone is sampled from its versine, never from a rounded cosine.
 // Radiance of the lit plane averaged over pixel (x, y), by the midpoint rule
-// on an 8 x 8 grid of camera rays.
-double pixel_expectation(const Scene& scene, int x, int y) {
+// on an 8 x 8 grid of camera rays; `radiance` gives it at a point (x, y, 0).
+double pixel_expectation(const Scene& scene, int x, int y, const std::function<double(double, double)>& radiance) {
   constexpr int n = 8;
   double sum = 0;
   for (int j = 0; j < n; ++j)
@@ -101,11 +100,14 @@ double pixel_expectation(const Scene& scene, int x, int y) {
       // origin of render space.
       const Vec3d o = scene.world_point(ray.o);
       const double t = -o.z / ray.d.z;
-      const Vec3d p{o.x + ray.d.x * t, o.y + ray.d.y * t, 0};
-      const double d = std::sqrt(p.x * p.x + p.y * p.y + kHeight * kHeight);
-      sum += kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
+      sum += radiance(o.x + ray.d.x * t, o.y + ray.d.y * t);
     }
   return sum / (n * n);
+}
+
+double sphere_light_radiance(double x, double y) {
+  const double d = std::sqrt(x * x + y * y + kHeight * kHeight);
+  return kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
 }
 
 TEST(DirectLighting, SphereLightOnPlaneSeenByLightPaths) {
@@ -134,7 +136,7 @@ TEST(DirectLighting, SphereLightOnPlaneSeenByLightPaths) {
       double expected = 0;
       const test::Region& g = regions[i];
       for (int y = g.lo.y; y < g.hi.y; ++y)
-        for (int x = g.lo.x; x < g.hi.x; ++x) expected += pixel_expectation(*scene, x, y);
+        for (int x = g.lo.x; x < g.hi.x; ++x) expected += pixel_expectation(*scene, x, y, sphere_light_radiance);
       expected /= (g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
       const double score = test::difference_score(estimates[i], {expected, 0, 0});
       EXPECT_LT(std::abs(score), t_critical) << integrator << " region " << i << ": " << estimates[i].mean << " +- "
@@ -143,6 +145,8 @@ TEST(DirectLighting, SphereLightOnPlaneSeenByLightPaths) {
   }
 }
 
+// A tiny light far away (a sun-like cone of 1e-8 sr) keeps its precision:
+// the cone is sampled from its versine, never from a rounded cosine.
 TEST(DirectLighting, TinyFarSphereLight) {
   const float radius = 0.01f, height = 100, Le = 1e8f;
   const auto scene = test::scene_from_xml(
@@ -202,6 +206,59 @@ TEST(DirectLighting, PointLightFarFromTheOriginIsExact) {
     const double d = std::sqrt(dx * dx + dy * dy + 1);
     const double expected = kRho * 2 / (M_PI * d * d * d);
     EXPECT_NEAR(out[0], expected, 1e-4 * expected) << "at (" << p[0] << ", " << p[1] << ")";
+  }
+}
+
+// A spot light at height 1 shining down (cutoff 40 degrees, full beam to 20):
+// the plane reflects rho I f(theta) / (pi d^3) at distance d, with f 1
+// within the beam, (40 - theta) / 20 between, 0 beyond. Exact for direct
+// light; by regions of independent runs for light tracing and BDPT.
+const char* kSpot =
+    "<emitter type='spot'><rgb name='intensity' value='2'/><float name='cutoff_angle' value='40'/>"
+    "<float name='beam_width' value='20'/><transform name='to_world'><lookat origin='0, 0, 1' target='0, 0, 0' "
+    "up='0, 1, 0'/></transform></emitter>";
+
+double spot_radiance(double x, double y) {
+  const double r = std::sqrt(x * x + y * y), d = std::sqrt(r * r + 1), theta = std::atan(r) * 180 / M_PI;
+  const double f = theta <= 20 ? 1 : theta >= 40 ? 0 : (40 - theta) / 20;
+  return kRho * 2 * f / (M_PI * d * d * d);
+}
+
+TEST(DirectLighting, SpotLightFallsOffLinearlyInAngle) {
+  const auto scene = test::scene_from_xml(plane_scene("<integrator type='direct'/>", kSpot));
+  for (const float x : {0.0f, 0.3f, 0.5f, 0.7f, 0.8f, 1.0f}) {
+    const auto [mean, se] = estimate(scene, x, 0.1f, 4);
+    EXPECT_NEAR(mean, spot_radiance(x, 0.1), 1e-5) << x;
+  }
+}
+
+TEST(DirectLighting, SpotLightSeenByLightPaths) {
+  const std::string camera =
+      "<sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
+      "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform>"
+      "<film type='hdrfilm'><integer name='width' value='24'/><integer name='height' value='24'/>"
+      "<rfilter type='box'/></film></sensor>";
+  const std::pair<const char*, uint32_t> integrators[] = {
+      {"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 64},
+      {"<integrator type='bdpt'><integer name='max_depth' value='2'/></integrator>", 16}};
+  const auto regions = test::grid_regions(24, 24, 4);
+  constexpr int kRuns = 10;
+  const double t_critical =
+      test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(integrators) * regions.size())), kRuns - 1);
+  uint64_t seed = 100;
+  for (const auto& [integrator, spp] : integrators) {
+    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, kSpot));
+    const auto estimates = test::estimate_regions(scene, regions, spp, kRuns, seed += kRuns);
+    for (size_t i = 0; i < regions.size(); ++i) {
+      double expected = 0;
+      const test::Region& g = regions[i];
+      for (int y = g.lo.y; y < g.hi.y; ++y)
+        for (int x = g.lo.x; x < g.hi.x; ++x) expected += pixel_expectation(*scene, x, y, spot_radiance);
+      expected /= (g.hi.x - g.lo.x) * (g.hi.y - g.lo.y);
+      const double score = test::difference_score(estimates[i], {expected, 0, 0});
+      EXPECT_LT(std::abs(score), t_critical) << integrator << " region " << i << ": " << estimates[i].mean << " +- "
+                                             << estimates[i].standard_error << ", expected " << expected;
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "core/math/constants.h"
@@ -87,6 +88,28 @@ TEST(PointEmitter, DeltaLightFallsOffWithDistanceSquared) {
   light.pdf_Le(le->ray, le->n, &pdf_pos, &pdf_dir);
   EXPECT_EQ(pdf_pos, le->pdf_pos);
   EXPECT_EQ(pdf_dir, le->pdf_dir);
+}
+
+// The spot's flux, sampled over its cone, matches its power: the intensity
+// integrated with the linear fall-off, 2 pi [1 - (sin c - sin b) / (c - b)].
+TEST(SpotEmitter, PowerMatchesSampledFlux) {
+  const auto scene = light_scene(
+      "<emitter type='spot'><rgb name='intensity' value='3'/><float name='cutoff_angle' value='50'/>"
+      "<float name='beam_width' value='10'/><transform name='to_world'><rotate x='1' angle='30'/></transform>"
+      "</emitter><shape type='sphere'/>");
+  const Emitter& light = *scene->emitters().front();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0, kOneMinusEpsilon);
+  double flux = 0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const auto le = light.sample_Le({u(rng), u(rng)}, {u(rng), u(rng)});
+    if (le) flux += le->Le.r / (le->pdf_pos * le->pdf_dir);
+  }
+  const double b = 10 * M_PI / 180, c = 50 * M_PI / 180;
+  const double expected = 3 * 2 * M_PI * (1 - (std::sin(c) - std::sin(b)) / (c - b));
+  EXPECT_NEAR(flux / n, expected, 0.005 * expected);
+  EXPECT_NEAR(light.power().r, expected, 1e-4 * expected);
 }
 
 TEST(ConstantEmitter, IlluminatesFromEveryDirection) {
