@@ -45,7 +45,7 @@ Vec3 half_vector(Vec3 wo, Vec3 wi) {
 class RoughConductorBsdf final : public Bsdf {
  public:
   explicit RoughConductorBsdf(const Properties& props)
-      : distribution_(microfacet_from(props)),
+      : roughness_(props),
         ior_(conductor_ior(props)),
         specular_reflectance_(read_reflectance(props, "specular_reflectance")),
         sample_visible_(props.get_bool("sample_visible")) {}
@@ -55,23 +55,25 @@ class RoughConductorBsdf final : public Bsdf {
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return {};
     const Vec3 m = half_vector(wo, wi);
-    const float D = distribution_.D(m);
+    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+    const float D = distribution.D(m);
     if (D == 0) return {};
-    const float G = distribution_.G(wo, wi, m);
+    const float G = distribution.G(wo, wi, m);
     const Color F = fresnel_conductor(dot(wo, m), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
     return F * (D * G / (4 * cos_theta(wo) * cos_theta(wi)));
   }
 
-  float pdf(const BsdfContext&, Vec3 wo, Vec3 wi) const override {
+  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return 0;
     const Vec3 m = half_vector(wo, wi);
     const float wo_m = dot(wo, m);
-    return wo_m > 0 ? pdf_m(wo, m) / (4 * wo_m) : 0;
+    return wo_m > 0 ? pdf_m(roughness_.at(ctx.uv), wo, m) / (4 * wo_m) : 0;
   }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2 u) const override {
     if (!(cos_theta(wo) > 0)) return std::nullopt;
-    const Vec3 m = sample_visible_ ? distribution_.sample(wo, u) : distribution_.sample_D(u);
+    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+    const Vec3 m = sample_visible_ ? distribution.sample(wo, u) : distribution.sample_D(u);
     const float wo_m = dot(wo, m);
     if (!(wo_m > 0)) return std::nullopt;
     const Vec3 wi = reflect(wo, m);
@@ -91,16 +93,18 @@ class RoughConductorBsdf final : public Bsdf {
   }
 
  private:
-  float pdf_m(Vec3 wo, Vec3 m) const { return sample_visible_ ? distribution_.pdf(wo, m) : distribution_.pdf_D(m); }
+  float pdf_m(const MicrofacetDistribution& d, Vec3 wo, Vec3 m) const {
+    return sample_visible_ ? d.pdf(wo, m) : d.pdf_D(m);
+  }
 
-  MicrofacetDistribution distribution_;
+  MicrofacetRoughness roughness_;
   ConductorIor ior_;
   std::shared_ptr<Texture> specular_reflectance_;
   bool sample_visible_;
 };
 
 std::vector<ParamSpec> params() {
-  auto p = microfacet_params(true);
+  auto p = microfacet_params(true, true);
   const auto ior = conductor_ior_params();
   p.insert(p.end(), ior.begin(), ior.end());
   p.insert(p.end(), {{"specular_reflectance", ParamType::Texture, "1", "factor on the reflectance (not physical)"},

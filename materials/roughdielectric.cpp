@@ -51,7 +51,7 @@ namespace {
 class RoughDielectricBsdf final : public Bsdf {
  public:
   explicit RoughDielectricBsdf(const Properties& props)
-      : interface_(props), distribution_(microfacet_from(props)), sample_visible_(props.get_bool("sample_visible")) {}
+      : interface_(props), roughness_(props), sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
@@ -73,7 +73,8 @@ class RoughDielectricBsdf final : public Bsdf {
       return BsdfSample{-wo, interface_.transmittance->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
     // Facets are seen from wo's side; the distribution is symmetric under
     // m -> (-m.x, -m.y, m.z), so wo inside samples as -wo outside.
-    const Vec3 m = sample_visible_ ? distribution_.sample(wo.z > 0 ? wo : -wo, u) : distribution_.sample_D(u);
+    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+    const Vec3 m = sample_visible_ ? distribution.sample(wo.z > 0 ? wo : -wo, u) : distribution.sample_D(u);
     const float wo_m = dot(wo, m);
     if (wo_m * wo.z <= 0) return std::nullopt;  // a back-facing facet (Beckmann samples those)
     const DielectricFresnel fr = fresnel_dielectric(wo_m, interface_.eta);
@@ -123,10 +124,11 @@ class RoughDielectricBsdf final : public Bsdf {
 
   // f and pdf of the pair (wo, wi) through facet normal m (m.z > 0).
   Evaluation evaluate(const BsdfContext& ctx, Vec3 wo, Vec3 wi, Vec3 m) const {
-    const float D = distribution_.D(m), G = distribution_.G(wo, wi, m);
+    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+    const float D = distribution.D(m), G = distribution.G(wo, wi, m);
     const float wo_m = dot(wo, m), wi_m = dot(wi, m);
     // Density of the facet normal as sampled from wo's side.
-    const float pdf_m = sample_visible_ ? distribution_.pdf(wo.z > 0 ? wo : -wo, m) : distribution_.pdf_D(m);
+    const float pdf_m = sample_visible_ ? distribution.pdf(wo.z > 0 ? wo : -wo, m) : distribution.pdf_D(m);
     if (!(D > 0) || !(pdf_m > 0)) return {};
     const float F = fresnel_dielectric(wo_m, interface_.eta).F;
     const float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
@@ -148,12 +150,12 @@ class RoughDielectricBsdf final : public Bsdf {
   }
 
   DielectricInterface interface_;
-  MicrofacetDistribution distribution_;
+  MicrofacetRoughness roughness_;
   bool sample_visible_;
 };
 
 std::vector<ParamSpec> params() {
-  auto p = microfacet_params(true);
+  auto p = microfacet_params(true, true);
   p.insert(p.end(),
            {{"int_ior", ParamType::Ior, "bk7",
              "index of refraction inside (below the normal); a number or a name such as water"},

@@ -4,30 +4,58 @@
 #include <stdexcept>
 
 #include "core/registry/properties.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 
-std::vector<ParamSpec> microfacet_params(bool anisotropic) {
-  std::vector<ParamSpec> params = {{"distribution", ParamType::String, "beckmann", "beckmann or ggx"},
-                                   {"alpha", ParamType::Float, "0.1", "roughness"}};
+std::vector<ParamSpec> microfacet_params(bool anisotropic, bool textured) {
+  const ParamType type = textured ? ParamType::Texture : ParamType::Float;
+  std::vector<ParamSpec> params = {
+      {"distribution", ParamType::String, "beckmann", "beckmann or ggx"},
+      {"alpha", type, "0.1", textured ? "roughness (a number or a texture)" : "roughness"}};
   if (anisotropic) {
-    params.push_back({"alpha_u", ParamType::Float, std::nullopt, "roughness along the tangent, with alpha_v"});
-    params.push_back({"alpha_v", ParamType::Float, std::nullopt, "roughness along the bitangent, with alpha_u"});
+    params.push_back({"alpha_u", type, std::nullopt, "roughness along the tangent, with alpha_v"});
+    params.push_back({"alpha_v", type, std::nullopt, "roughness along the bitangent, with alpha_u"});
   }
   return params;
 }
 
-MicrofacetDistribution microfacet_from(const Properties& props) {
-  MicrofacetDistribution::Type type;
+namespace {
+
+MicrofacetDistribution::Type distribution_type(const Properties& props) {
   try {
-    type = MicrofacetDistribution::parse_type(props.get_string("distribution"));
+    return MicrofacetDistribution::parse_type(props.get_string("distribution"));
   } catch (const std::invalid_argument& e) {
     throw props.error("distribution", e.what());
   }
+}
+
+void check_pairing(const Properties& props) {
   const bool has_u = props.has("alpha_u"), has_v = props.has("alpha_v");
   if (props.has("alpha") && (has_u || has_v))
     throw props.error("alpha", "give either alpha or alpha_u and alpha_v, not both");
   if (has_u != has_v) throw props.error(has_u ? "alpha_u" : "alpha_v", "alpha_u and alpha_v go together");
+}
+
+}  // namespace
+
+MicrofacetRoughness::MicrofacetRoughness(const Properties& props) : type_(distribution_type(props)) {
+  check_pairing(props);
+  const auto roughness = [&](const char* name) {
+    const char* source = props.has(name) ? name : "alpha";
+    auto texture = read_texture(props, source);
+    const ValueRange range = texture->range();
+    if (!(range.lowest >= 0) || !std::isfinite(range.highest))
+      throw props.error(source, "roughness must be finite and not negative");
+    return texture;
+  };
+  alpha_u_ = roughness("alpha_u");
+  alpha_v_ = roughness("alpha_v");
+}
+
+MicrofacetDistribution microfacet_from(const Properties& props) {
+  const MicrofacetDistribution::Type type = distribution_type(props);
+  check_pairing(props);
   const auto roughness = [&](const char* name) {
     const char* source = props.has(name) ? name : "alpha";
     const float alpha = props.get_float(source);
