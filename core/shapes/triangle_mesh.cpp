@@ -36,7 +36,6 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
   std::vector<bool> had_area(triangle_count());
   for (size_t i = 0; i < mesh_.indices.size(); i += 3) had_area[i / 3] = area2(i) > 0;
   for (Vec3& p : mesh_.positions) p = to_world.point(p);
-  for (size_t i = 0; i < mesh_.indices.size(); i += 3) collapsed_ += had_area[i / 3] && !(area2(i) > 0);
   for (Vec3& n : mesh_.normals) n = normalize(to_world.normal(n));
   // Embree reads each vertex with a 16-byte load; the spare capacity keeps
   // the last one's read inside the allocation.
@@ -44,9 +43,9 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
   std::vector<float> areas;
   areas.reserve(triangle_count());
   for (size_t i = 0; i < mesh_.indices.size(); i += 3) {
-    const Vec3 p0 = mesh_.positions[mesh_.indices[i]], p1 = mesh_.positions[mesh_.indices[i + 1]],
-               p2 = mesh_.positions[mesh_.indices[i + 2]];
-    areas.push_back(0.5f * length(cross(p1 - p0, p2 - p0)));
+    const float stored2 = area2(i);
+    collapsed_ += had_area[i / 3] && !(stored2 > 0);
+    areas.push_back(0.5f * std::sqrt(stored2));
     area_ += areas.back();
   }
   // A mesh of only degenerate triangles can still be hit-tested, but not sampled.
