@@ -53,22 +53,10 @@ class RoughConductorBsdf final : public Bsdf {
   uint32_t lobes() const override { return kGlossyReflection; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return {};
-    const Vec3 m = half_vector(wo, wi);
-    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
-    const float D = distribution.D(m);
-    if (D == 0) return {};
-    const float G = distribution.G(wo, wi, m);
-    const Color F = fresnel_conductor(dot(wo, m), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
-    return F * (D * G / (4 * cos_theta(wo) * cos_theta(wi)));
+    return eval_with(roughness_.at(ctx.uv), ctx, wo, wi);
   }
 
-  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return 0;
-    const Vec3 m = half_vector(wo, wi);
-    const float wo_m = dot(wo, m);
-    return wo_m > 0 ? pdf_m(roughness_.at(ctx.uv), wo, m) / (4 * wo_m) : 0;
-  }
+  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override { return pdf_with(roughness_.at(ctx.uv), wo, wi); }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2 u) const override {
     if (!(cos_theta(wo) > 0)) return std::nullopt;
@@ -80,9 +68,9 @@ class RoughConductorBsdf final : public Bsdf {
     if (!(cos_theta(wi) > 0)) return std::nullopt;
     // The pdf of the half vector of the pair, as pdf() computes it, so that
     // the sample agrees with pdf() to rounding.
-    const float pdf = this->pdf(ctx, wo, wi);
+    const float pdf = pdf_with(distribution, wo, wi);
     if (!(pdf > 0)) return std::nullopt;
-    return BsdfSample{wi, eval(ctx, wo, wi), pdf, kGlossyReflection, 1};
+    return BsdfSample{wi, eval_with(distribution, ctx, wo, wi), pdf, kGlossyReflection, 1};
   }
 
   // Fresnel reflectance at the macro-surface normal: an approximation that
@@ -93,8 +81,22 @@ class RoughConductorBsdf final : public Bsdf {
   }
 
  private:
-  float pdf_m(const MicrofacetDistribution& d, Vec3 wo, Vec3 m) const {
-    return sample_visible_ ? d.pdf(wo, m) : d.pdf_D(m);
+  // eval and pdf with the distribution at the point, found once per call.
+  Color eval_with(const MicrofacetDistribution& d, const BsdfContext& ctx, Vec3 wo, Vec3 wi) const {
+    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return {};
+    const Vec3 m = half_vector(wo, wi);
+    const float D = d.D(m);
+    if (D == 0) return {};
+    const float G = d.G(wo, wi, m);
+    const Color F = fresnel_conductor(dot(wo, m), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+    return F * (D * G / (4 * cos_theta(wo) * cos_theta(wi)));
+  }
+  float pdf_with(const MicrofacetDistribution& d, Vec3 wo, Vec3 wi) const {
+    if (!(cos_theta(wo) > 0 && cos_theta(wi) > 0)) return 0;
+    const Vec3 m = half_vector(wo, wi);
+    const float wo_m = dot(wo, m);
+    if (!(wo_m > 0)) return 0;
+    return (sample_visible_ ? d.pdf(wo, m) : d.pdf_D(m)) / (4 * wo_m);
   }
 
   MicrofacetRoughness roughness_;

@@ -59,12 +59,12 @@ class RoughDielectricBsdf final : public Bsdf {
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     const auto m = half_vector(wo, wi);
-    return m ? evaluate(ctx, wo, wi, *m).f : Color();
+    return m ? evaluate(roughness_.at(ctx.uv), ctx, wo, wi, *m).f : Color();
   }
 
   float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     const auto m = half_vector(wo, wi);
-    return m ? evaluate(ctx, wo, wi, *m).pdf : 0;
+    return m ? evaluate(roughness_.at(ctx.uv), ctx, wo, wi, *m).pdf : 0;
   }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
@@ -89,7 +89,7 @@ class RoughDielectricBsdf final : public Bsdf {
       lobe = kGlossyTransmission;
       if (wi.z * wo.z >= 0) return std::nullopt;
     }
-    const Evaluation e = evaluate(ctx, wo, wi, m);
+    const Evaluation e = evaluate(distribution, ctx, wo, wi, m);
     if (!(e.pdf > 0)) return std::nullopt;
     return BsdfSample{wi, e.f, e.pdf, lobe, lobe == kGlossyTransmission ? fr.eta_it : 1.0f};
   }
@@ -122,9 +122,10 @@ class RoughDielectricBsdf final : public Bsdf {
     return m;
   }
 
-  // f and pdf of the pair (wo, wi) through facet normal m (m.z > 0).
-  Evaluation evaluate(const BsdfContext& ctx, Vec3 wo, Vec3 wi, Vec3 m) const {
-    const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
+  // f and pdf of the pair (wo, wi) through facet normal m (m.z > 0), with
+  // the distribution at the point.
+  Evaluation evaluate(const MicrofacetDistribution& distribution, const BsdfContext& ctx, Vec3 wo, Vec3 wi,
+                      Vec3 m) const {
     const float D = distribution.D(m), G = distribution.G(wo, wi, m);
     const float wo_m = dot(wo, m), wi_m = dot(wi, m);
     // Density of the facet normal as sampled from wo's side.

@@ -33,14 +33,14 @@ size_t values_at_float_limit(const Image& image);
 void write_exr(const std::filesystem::path& path, const Image& image,
                const std::map<std::string, std::string>& metadata, bool half_float);
 
-// Quantises display-referred RGB in [0, 1] to `bits` (8 or 16) per channel.
-// 8-bit output is dithered with triangular noise of +-1 step (a pure function
-// of the pixel, so outputs are reproducible): smooth gradients then show
-// noise finer than the eye resolves instead of bands.
 // Writes the named channels of `image` (R, G, B for Radiance RGBE; R, G,
 // B or Y for PFM) as a .hdr or .pfm file, as the extension says; atomic.
 void write_plain_float(const std::filesystem::path& path, const Image& image, const std::vector<std::string>& channels);
 
+// Quantises display-referred RGB in [0, 1] to `bits` (8 or 16) per channel.
+// 8-bit output is dithered with triangular noise of +-1 step (a pure function
+// of the pixel, so outputs are reproducible): smooth gradients then show
+// noise finer than the eye resolves instead of bands.
 std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width, int bits);
 
 // Writes display-referred RGB (in [0, 1]) as an 8- or 16-bit PNG; atomic.

@@ -1,22 +1,18 @@
 #include "core/loader/spectrum_value.h"
 
-#include <cmath>
-#include <filesystem>
 #include <stdexcept>
+#include <vector>
 
 namespace caustica {
 namespace {
 
+// A number as value attributes hold them; a temperature may end in K.
 double number(const XmlNode& node, const std::string& text, const char* what) {
   std::string t = text;
   if (!t.empty() && (t.back() == 'K' || t.back() == 'k')) t.pop_back();
-  try {
-    size_t used = 0;
-    const double v = std::stod(t, &used);
-    if (used == t.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
-  throw SceneError(node.where, "cannot read '" + text.substr(0, 40) + "' as " + what);
+  const std::vector<double> n = parse_numbers(t, node.where, what);
+  if (n.size() != 1) throw SceneError(node.where, "cannot parse '" + text + "' as " + what);
+  return n[0];
 }
 
 PropertyValue rgb(const XmlNode& node, Color c) { return {ValueKind::Rgb, c, node.where}; }

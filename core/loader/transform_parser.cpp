@@ -1,6 +1,5 @@
 #include "core/loader/transform_parser.h"
 
-#include <cctype>
 #include <stdexcept>
 #include <vector>
 
@@ -16,27 +15,10 @@ double number(const XmlNode& node, const char* attr, double fallback) {
   return v ? std::get<double>(parse_value_text(ValueKind::Float, *v, node.where).value) : fallback;
 }
 
-// The numbers of a list such as "1, 2, 3" or "1 0 0 0 ...".
-std::vector<double> numbers(const std::string& text, const SourceLocation& where) {
-  std::vector<double> values;
-  std::string token;
-  for (char c : text + " ") {
-    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
-      if (!token.empty()) values.push_back(std::get<double>(parse_value_text(ValueKind::Float, token, where).value));
-      token.clear();
-    } else {
-      token += c;
-    }
-  }
-  return values;
-}
-
 Vec3d triple(const XmlNode& node, const char* attr) {
   const std::string* v = node.attribute(attr);
   if (!v) throw SceneError(node.where, "<" + node.tag + "> needs a '" + attr + "' attribute");
-  const std::vector<double> values = numbers(*v, node.where);
-  if (values.size() != 3) throw SceneError(node.where, "cannot parse '" + *v + "' as vector (expected 3 numbers)");
-  return {values[0], values[1], values[2]};
+  return std::get<Vec3d>(parse_value_text(ValueKind::Vector, *v, node.where).value);
 }
 
 // value="x, y, z" or x/y/z attributes, each defaulting to `fallback`.
@@ -68,7 +50,7 @@ Transform parse_step(const XmlNode& step) {
     step.check_attributes({"value"});
     const std::string* v = step.attribute("value");
     if (!v) throw SceneError(step.where, "<matrix> needs a 'value' attribute");
-    const std::vector<double> values = numbers(*v, step.where);
+    const std::vector<double> values = parse_numbers(*v, step.where, "matrix");
     Matrix4 m = Matrix4::identity();
     if (values.size() != 16)
       throw SceneError(step.where, "<matrix> needs 16 numbers (row-major 4x4), found " + std::to_string(values.size()));

@@ -5,8 +5,8 @@ namespace caustica {
 namespace fs = std::filesystem;
 
 fs::path FileResolver::resolve(const fs::path& name, const fs::path& naming_file) const {
-  const fs::path beside = (naming_file.parent_path() / name).lexically_normal();
   if (name.is_absolute()) return name;
+  const fs::path beside = (naming_file.parent_path() / name).lexically_normal();
   std::error_code ec;
   if (fs::exists(beside, ec)) return beside;
   for (const fs::path& folder : folders_)

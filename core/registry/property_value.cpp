@@ -30,9 +30,6 @@ const char* to_string(ValueKind k) {
   return "?";
 }
 
-namespace {
-
-// Numbers separated by commas and/or whitespace.
 std::vector<double> parse_numbers(const std::string& text, const SourceLocation& where, const char* what) {
   std::vector<double> out;
   const char* p = text.data();
@@ -51,8 +48,6 @@ std::vector<double> parse_numbers(const std::string& text, const SourceLocation&
   }
   return out;
 }
-
-}  // namespace
 
 PropertyValue parse_value_text(ValueKind kind, const std::string& text, const SourceLocation& where) {
   PropertyValue v{kind, {}, where};

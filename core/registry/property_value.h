@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "core/errors/scene_error.h"
 #include "core/math/color.h"
@@ -28,6 +29,11 @@ struct PropertyValue {
   std::variant<bool, int64_t, double, std::string, Color, Vec3d, Transform, ObjectValue> value;
   SourceLocation where;
 };
+
+// The numbers of a list such as "1, 2, 3" or "1 0 0 0 ..." (commas and/or
+// whitespace between them, an explicit '+' allowed); throws SceneError at
+// `where`, calling the whole text a `what`, on anything else.
+std::vector<double> parse_numbers(const std::string& text, const SourceLocation& where, const char* what);
 
 // Parses the text of a value element of kind `kind` (as in <float value="...">);
 // throws SceneError at `where` on malformed text.

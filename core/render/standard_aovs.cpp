@@ -7,14 +7,15 @@ namespace caustica {
 
 namespace {
 
-const AovEvaluator& standard_aovs(bool alpha) {
-  static const AovEvaluator without(parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth"));
+std::vector<AovSpec> standard_specs(bool alpha) {
+  auto aovs = parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth");
   // Unnamed, coverage is the film's alpha channel "A".
-  static const AovEvaluator with([] {
-    auto aovs = parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth");
-    aovs.push_back({"", AovKind::Coverage});
-    return aovs;
-  }());
+  if (alpha) aovs.push_back({"", AovKind::Coverage});
+  return aovs;
+}
+
+const AovEvaluator& standard_aovs(bool alpha) {
+  static const AovEvaluator without(standard_specs(false)), with(standard_specs(true));
   return alpha ? with : without;
 }
 

@@ -12,9 +12,10 @@ namespace caustica {
 class Scene;
 
 // The first-hit layers written beside the beauty (albedo, shading normal,
-// depth, and coverage where the film asks for alpha). They are estimated from the first kAovSamples samples of each
-// pixel only: noise-free values converge within a few samples, and the
-// extra ray per sample then costs nothing at high sample counts.
+// depth, and coverage where the film asks for alpha). They are estimated
+// from the first kAovSamples samples of each pixel only: noise-free values
+// converge within a few samples, and the extra ray per sample then costs
+// nothing at high sample counts.
 inline constexpr uint32_t kAovSamples = 16;
 std::vector<std::string> standard_aov_channels(bool alpha);
 

@@ -83,48 +83,43 @@ MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
   // Attributes only some sub-meshes carry cannot be interpolated consistently.
   if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
   if (mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
-  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
   return mesh;
 }
 
-std::string file_bytes(const Properties& props, const std::filesystem::path& file) {
+// A mesh by one of caustica's own readers, from the file's bytes; its
+// errors name the file.
+template <class Parse>
+MeshData read_own_format(const Properties& props, const Parse& parse) {
+  const std::filesystem::path file = mesh_file(props);
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
   if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
-  return std::move(bytes).str();
+  try {
+    return parse(bytes.view());
+  } catch (const MeshFormatError& e) {
+    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
+  }
 }
 
 MeshData read_ply_file(const Properties& props, bool flip_tex_coords) {
-  const std::filesystem::path file = mesh_file(props);
-  MeshData mesh;
-  try {
-    mesh = read_ply(file_bytes(props, file));
-  } catch (const PlyError& e) {
-    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
-  }
+  MeshData mesh = read_own_format(props, [](std::string_view bytes) { return read_ply(bytes); });
   if (flip_tex_coords)
     for (Vec2& uv : mesh.uvs) uv.y = 1 - uv.y;
-  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
   return mesh;
 }
 
 MeshData read_serialized_file(const Properties& props) {
-  const std::filesystem::path file = mesh_file(props);
   const int64_t index = props.get_int("shape_index");
   if (index < 0) throw props.error("shape_index", "must not be negative");
-  MeshData mesh;
-  try {
-    mesh = read_serialized(file_bytes(props, file), uint64_t(index));
-  } catch (const SerializedError& e) {
-    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
-  }
-  if (mesh.indices.empty()) throw props.error("filename", "mesh file '" + file.string() + "' holds no triangles");
-  return mesh;
+  return read_own_format(props, [&](std::string_view bytes) { return read_serialized(bytes, uint64_t(index)); });
 }
 
-// The normals the mesh is shaded with.
+// What every mesh file gives the shape: triangles, and the normals it is
+// shaded with.
 MeshData shaded(MeshData mesh, const Properties& props) {
+  if (mesh.indices.empty())
+    throw props.error("filename", "mesh file '" + props.get_path("filename").string() + "' holds no triangles");
   if (props.get_bool("face_normals") || mesh.face_normals)
     mesh.normals.clear();
   else if (mesh.normals.empty())

@@ -4,14 +4,15 @@
 #include <string>
 #include <string_view>
 
+#include "core/shapes/mesh_format_error.h"
 #include "core/shapes/triangle_mesh.h"
 
 namespace caustica {
 
 // A PLY file that cannot be read; what() says where in the file and why.
-class PlyError : public std::runtime_error {
+class PlyError : public MeshFormatError {
  public:
-  using std::runtime_error::runtime_error;
+  using MeshFormatError::MeshFormatError;
 };
 
 // Reads a PLY mesh (ascii, binary_little_endian or binary_big_endian 1.0)

@@ -4,14 +4,15 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/shapes/mesh_format_error.h"
 #include "core/shapes/triangle_mesh.h"
 
 namespace caustica {
 
 // A serialized file that cannot be read; what() says which mesh, where and why.
-class SerializedError : public std::runtime_error {
+class SerializedError : public MeshFormatError {
  public:
-  using std::runtime_error::runtime_error;
+  using MeshFormatError::MeshFormatError;
 };
 
 // Reads mesh `shape_index` of a Mitsuba .serialized file (format versions 3
