@@ -46,6 +46,8 @@ class Scene {
 
   const std::vector<std::shared_ptr<Shape>>& shapes() const { return shapes_; }
   const std::vector<std::shared_ptr<Emitter>>& emitters() const { return emitters_; }
+  // The environments a ray leaving the scene can meet (a directional
+  // light, a delta in direction, is met by none).
   const std::vector<const Emitter*>& infinite_emitters() const { return infinite_; }
   const LightSelection& light_selection() const { return *lights_; }
   const Sensor& sensor() const { return *sensor_; }

@@ -61,8 +61,9 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   f.pinhole = !scene.sensor().has_lens();
   for (const auto& e : scene.emitters()) {
     f.area_lights += e->is_area();
-    f.point_lights += e->is_delta();
-    f.environment_lights += e->is_infinite();
+    f.point_lights += e->is_delta() && !e->is_infinite();
+    f.directional_lights += e->is_delta() && e->is_infinite();
+    f.environment_lights += e->is_infinite() && !e->is_delta();
   }
   bool receiver = false;
   int specular_shapes = 0;
@@ -91,7 +92,8 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
 std::string describe(const SceneFeatures& f) {
   std::ostringstream out;
   out << "bsdf lobes: " << lobe_names(f.lobes) << "\nlights: " << f.area_lights << " area, " << f.point_lights
-      << " point, " << f.environment_lights << " environment\ntextures: " << (f.textures ? "yes" : "no")
+      << " point, " << f.directional_lights << " directional, " << f.environment_lights
+      << " environment\ntextures: " << (f.textures ? "yes" : "no")
       << "\ncamera: " << (f.pinhole ? "pinhole (no lens to sample)" : "lens")
       << "\ncaustic paths: " << (f.caustic_paths ? "possible (" : "impossible (") << f.caustics_reason << ")\n";
   return out.str();

@@ -11,7 +11,7 @@ class Scene;
 // only the work the scene can use and say what they skip.
 struct SceneFeatures {
   uint32_t lobes = 0;  // BsdfLobe flags of every surface together
-  int area_lights = 0, point_lights = 0, environment_lights = 0;
+  int area_lights = 0, point_lights = 0, directional_lights = 0, environment_lights = 0;
   bool textures = false;
   bool pinhole = true;  // no lens to sample
   // Caustic paths (light focused through mirrors or glass onto a diffuse or

@@ -25,7 +25,7 @@ struct PathVertex {
   bool environment = false;
   Vec3 w_env;                // environment vertices: unit direction from the scene toward the environment
   bool delta = false;        // the subpath left this vertex through a delta lobe
-  bool delta_light = false;  // a light vertex at a delta position (point light): no ray can hit it
+  bool delta_light = false;  // a delta light's vertex (point, spot, directional): no ray can hit it
   Color beta;                // the subpath's throughput up to this vertex
   float pdf_fwd = 0;         // density of this vertex as its own subpath sampled it
   float pdf_rev = 0;         // density of this vertex as the other subpath would sample it

@@ -70,7 +70,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   PathVertex& light = path.emplace_back();
   light.kind = PathVertex::Kind::Light;
   light.emitter = start->emitter;
-  light.delta_light = start->le.delta_position;
+  light.delta_light = start->emitter->is_delta();
   if (start->emitter->is_infinite()) {
     light.environment = true;
     light.w_env = -start->le.ray.d;

@@ -28,9 +28,10 @@ namespace {
 
 constexpr float kRho = 0.6f, kLe = 3.0f, kRadius = 0.25f, kHeight = 1.0f;
 
-std::string plane_scene(const std::string& integrator, const std::string& light) {
-  return "<scene version='3.0.0'>" + integrator +
-         "<shape type='rectangle'><transform name='to_world'><scale value='10'/></transform>"
+std::string plane_scene(const std::string& integrator, const std::string& light, int half_width = 10) {
+  return "<scene version='3.0.0'>" + integrator + "<shape type='rectangle'><transform name='to_world'><scale value='" +
+         std::to_string(half_width) +
+         "'/></transform>"
          "<bsdf type='diffuse'><rgb name='reflectance' value='" +
          std::to_string(kRho) + "'/></bsdf></shape>" + light + "</scene>";
 }
@@ -115,7 +116,8 @@ double sphere_light_radiance(double x, double y) {
 // against `radiance` averaged over the region's pixels, at 0.1% Sidak-
 // corrected over regions and integrators.
 void expect_regions_match(const std::string& light, const std::vector<std::pair<const char*, uint32_t>>& integrators,
-                          const std::function<double(double, double)>& radiance, uint64_t seed) {
+                          const std::function<double(double, double)>& radiance, uint64_t seed,
+                          int plane_half_width = 10) {
   const std::string camera =
       "<sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
       "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform>"
@@ -126,7 +128,7 @@ void expect_regions_match(const std::string& light, const std::vector<std::pair<
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.001, int(integrators.size() * regions.size())), kRuns - 1);
   for (const auto& [integrator, spp] : integrators) {
-    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, light));
+    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, light, plane_half_width));
     const auto estimates = test::estimate_regions(scene, regions, spp, kRuns, seed += kRuns);
     for (size_t i = 0; i < regions.size(); ++i) {
       double expected = 0;
@@ -245,6 +247,42 @@ TEST(DirectLighting, SpotLightSeenByLightPaths) {
                        {{"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 64},
                         {"<integrator type='bdpt'><integer name='max_depth' value='2'/></integrator>", 16}},
                        spot_radiance, 100);
+}
+
+// A directional light travelling at 30 degrees to the plane's normal: the
+// plane reflects rho E cos 30 / pi everywhere. Exact for direct light and
+// for path (the bounce escapes into nothing); light paths start on a disk
+// across the scene's bounds, so the plane is kept small enough (half-width
+// 1, still wider than the view) for most of them to be seen.
+const char* kDirectional =
+    "<emitter type='directional'><vector name='direction' x='0.5' y='0' z='-0.8660254'/>"
+    "<rgb name='irradiance' value='2'/></emitter>";
+
+double directional_radiance(double, double) { return kRho * 2 * std::cos(M_PI / 6) / M_PI; }
+
+TEST(DirectLighting, DirectionalLightIsExact) {
+  for (const char* integrator :
+       {"<integrator type='direct'/>", "<integrator type='path'><integer name='max_depth' value='3'/></integrator>"}) {
+    const auto scene = test::scene_from_xml(plane_scene(integrator, kDirectional));
+    for (const auto& p : kPoints) {
+      const auto [mean, se] = estimate(scene, p[0], p[1], 16);
+      EXPECT_NEAR(mean, directional_radiance(p[0], p[1]), 1e-5) << integrator;
+      EXPECT_LT(se, 1e-6);
+    }
+  }
+}
+
+TEST(DirectLighting, DirectionalLightSeenByLightPaths) {
+  expect_regions_match(kDirectional,
+                       {{"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 16},
+                        {"<integrator type='bdpt'><integer name='max_depth' value='2'/></integrator>", 8},
+                        {"<integrator type='bdpt'><integer name='max_depth' value='2'/><string name='mis' "
+                         "value='balance'/></integrator>",
+                         8},
+                        {"<integrator type='sppm'><integer name='max_depth' value='2'/><integer name='photons' "
+                         "value='20000'/></integrator>",
+                         8}},
+                       directional_radiance, 200, 1);
 }
 
 TEST(DirectLighting, EmittersSeenDirectlyAndHidden) {

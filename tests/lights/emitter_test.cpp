@@ -1,6 +1,7 @@
 // The light interface every integrator relies on: sample_Li agrees with
 // pdf_Li, sample_Le with pdf_Le, and power with the emitted flux.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,6 +111,53 @@ TEST(SpotEmitter, PowerMatchesSampledFlux) {
   const double expected = 3 * 2 * M_PI * (1 - (std::sin(c) - std::sin(b)) / (c - b));
   EXPECT_NEAR(flux / n, expected, 0.005 * expected);
   EXPECT_NEAR(light.power().r, expected, 1e-4 * expected);
+}
+
+// A directional light: every direction it gives is its own, light rays
+// start outside the scene's bounding sphere and cross it, and its power is
+// the irradiance over the disk they start on.
+TEST(DirectionalEmitter, OneDirectionAcrossTheScene) {
+  const auto scene = light_scene(
+      "<emitter type='directional'><vector name='direction' x='0' y='3' z='-4'/>"
+      "<rgb name='irradiance' value='2'/></emitter><shape type='sphere'><float name='radius' value='2'/></shape>");
+  const Emitter& light = *scene->emitters().front();
+  EXPECT_TRUE(light.is_delta());
+  EXPECT_TRUE(scene->infinite_emitters().empty());  // no escaping ray can meet it
+  const auto ls = light.sample_Li({{0, 0, 5}, {}, {}}, {0.2f, 0.7f});
+  ASSERT_TRUE(ls);
+  EXPECT_TRUE(ls->is_delta && ls->is_infinite);
+  EXPECT_NEAR(ls->wi.y, -0.6f, 1e-6f);
+  EXPECT_NEAR(ls->wi.z, 0.8f, 1e-6f);
+  EXPECT_FLOAT_EQ(ls->Li.r, 2);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(0, kOneMinusEpsilon);
+  int hits = 0;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const auto le = light.sample_Le({u(rng), u(rng)}, {u(rng), u(rng)});
+    ASSERT_TRUE(le);
+    EXPECT_NEAR(le->ray.d.y, 0.6f, 1e-6f);
+    // Starts outside the sphere of radius 2 (the scene), never inside it.
+    EXPECT_GT(length(le->ray.o), 2.0f);
+    EXPECT_FLOAT_EQ(light.power().r, le->Le.r / le->pdf_pos);
+    hits += bool(scene->intersect(le->ray));
+  }
+  // The fraction of rays that meet the sphere: its cross-section, pi 2^2,
+  // over the disk's area, whose radius is 1.01 times the bounding box's
+  // half-diagonal 2 sqrt 3.
+  const double p = 4 / (12 * 1.01 * 1.01), sigma = std::sqrt(p * (1 - p) / n);
+  EXPECT_NEAR(double(hits) / n, p, 4 * sigma);
+}
+
+TEST(DirectionalEmitter, BadDirections) {
+  EXPECT_THAT(
+      test::load_error("<scene version='3.0.0'><emitter type='directional'><vector name='direction' "
+                       "value='0, 0, 0'/></emitter></scene>"),
+      testing::HasSubstr("parameter 'direction' of emitter 'directional': must give a nonzero finite direction"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><emitter type='directional'><vector name='direction' "
+                               "value='0, 0, 1'/><transform name='to_world'><rotate x='1' angle='3'/></transform>"
+                               "</emitter></scene>"),
+              testing::HasSubstr("give either direction or to_world, not both"));
 }
 
 TEST(ConstantEmitter, IlluminatesFromEveryDirection) {

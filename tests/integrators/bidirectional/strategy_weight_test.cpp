@@ -7,7 +7,9 @@
 // weight bdpt computes for the strategy that made the path (with the
 // densities the connection overrides) must also equal the recomputed one.
 // Both are checked to single-precision accuracy; the scenes cover area,
-// point and environment lights and diffuse, glossy and delta surfaces.
+// point, directional and environment lights and diffuse, glossy and delta
+// surfaces. Which strategies are possible is decided from the emitter
+// itself, never from the vertex's own flags.
 
 #include "integrators/bidirectional/strategy_weight.h"
 
@@ -95,16 +97,28 @@ float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, in
   return strategy_weight(scene, light, camera, sp, k + 1 - sp, h);
 }
 
+// The same scene lit by the sun: a directional light instead of the sky.
+std::string sun_scene() {
+  std::string xml = kMixedScene;
+  const std::string sky = "<emitter type='constant'><rgb name='radiance' value='0.2'/></emitter>";
+  return xml.replace(xml.find(sky), sky.size(),
+                     "<emitter type='directional'><vector name='direction' x='0.3' y='0.4' z='-1'/>"
+                     "<rgb name='irradiance' value='2'/></emitter>");
+}
+
+// Whether no ray can reach the path's first vertex (a point, spot or directional light).
+bool delta_light(const PathVertex& origin) { return origin.emitter && origin.emitter->is_delta(); }
+
 bool possible(const std::vector<PathVertex>& x, int sp) {
   const int k = int(x.size()) - 1;
-  if (sp == 0) return !x[0].delta_light;
-  if (sp == k && k == 1) return !x[0].environment && !x[0].delta_light;
+  if (sp == 0) return !delta_light(x[0]);
+  if (sp == k && k == 1) return !x[0].environment && !delta_light(x[0]);
   return (sp == 1 || !x[sp - 1].delta) && (sp == k || !x[sp].delta);
 }
 
 // How many paths of each kind were checked.
 struct Tally {
-  int paths = 0, environment = 0, point_light = 0, through_delta = 0;
+  int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0;
 };
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
@@ -134,8 +148,9 @@ void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) 
         const float own = strategy_weight(scene, std::span(light).first(s), camera_part, s, t, h);
         const float fresh = recomputed_weight(scene, x, s, h);
         ++tally.paths;
-        tally.environment += x[0].environment;
-        tally.point_light += x[0].delta_light;
+        tally.environment += x[0].environment && !delta_light(x[0]);
+        tally.point_light += !x[0].environment && delta_light(x[0]);
+        tally.directional += x[0].environment && delta_light(x[0]);
         tally.through_delta += std::any_of(x.begin(), x.end(), [](const PathVertex& v) { return v.delta; });
         ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
         ASSERT_NEAR(own, fresh, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
@@ -146,17 +161,20 @@ void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) 
 TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
   const auto glass = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "16"}});
   const auto mixed = test::scene_from_xml(kMixedScene);
+  const auto sun = test::scene_from_xml(sun_scene());
   for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance}) {
     Tally tally;
     check_scene(*glass, h, 1000, tally);
     check_scene(*mixed, h, 1000, tally);
+    check_scene(*sun, h, 1000, tally);
     // Enough paths of every kind were seen for the test to mean something.
     EXPECT_GT(tally.paths, 5000);
     EXPECT_GT(tally.environment, 100);
     EXPECT_GT(tally.point_light, 100);
+    EXPECT_GT(tally.directional, 100);
     EXPECT_GT(tally.through_delta, 100);
-    std::printf("%d paths: %d from the environment, %d from the point light, %d through delta lobes\n", tally.paths,
-                tally.environment, tally.point_light, tally.through_delta);
+    std::printf("%d paths: %d from the environment, %d from point lights, %d from the sun, %d through delta lobes\n",
+                tally.paths, tally.environment, tally.point_light, tally.directional, tally.through_delta);
   }
 }
 
