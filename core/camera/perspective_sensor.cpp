@@ -1,95 +1,86 @@
-// perspective: a pinhole camera.
+// perspective: a pinhole camera; thinlens: the same with a lens of radius
+// aperture_radius focused at focus_distance, for depth of field.
 //
-// Without a nested film it uses an hdrfilm, and without a nested sampler an
+// Without a nested film they use an hdrfilm, and without a nested sampler an
 // independent sampler, each with its default parameters.
 //
 //   <sensor type="perspective">
 //       <float name="fov" value="39.3"/>
 //       <transform name="to_world"><lookat origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
 //   </sensor>
+//   <sensor type="thinlens">
+//       <float name="aperture_radius" value="0.05"/>
+//       <float name="focus_distance" value="4"/>
+//   </sensor>
 
 #include <cmath>
 
+#include "core/camera/perspective_projection.h"
 #include "core/camera/sensor.h"
 #include "core/math/constants.h"
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
+#include "core/sampling/warp.h"
 
 namespace caustica {
 namespace {
 
-template <class T>
-std::shared_ptr<T> child_or_default(const Properties& props, const char* category, const char* name) {
-  if (auto c = props.child<T>(category)) return c;
-  return Registry::instance().create_default<T>(category, name, props.where());
-}
-
-class PerspectiveSensor final : public Sensor {
- public:
-  explicit PerspectiveSensor(const Properties& props)
-      : to_world_(props.get_transform("to_world")),
+// Camera space has the lens in the plane z = 0, centred on the origin. A
+// ray from lens point l toward the point the pinhole ray of a raster
+// position meets at depth focus_distance; with no aperture it is the
+// pinhole camera. Importance and densities are those of the thin lens
+// (pbrt's derivation): We = 1 / (A A_lens cos^4), with A the window's area
+// on the plane z = 1.
+class ProjectiveSensor : public Sensor {
+ protected:
+  ProjectiveSensor(const Properties& props, bool thin_lens)
+      : Sensor(props),
+        to_world_(props.get_transform("to_world")),
         to_camera_(to_world_.inverse()),
         near_(props.get_float("near_clip")),
-        far_(props.get_float("far_clip")) {
-    set_film_and_sampler(child_or_default<Film>(props, "film", "hdrfilm"),
-                         child_or_default<Sampler>(props, "sampler", "independent"));
-    props.get_float("focus_distance");
+        far_(props.get_float("far_clip")),
+        projection_(props, *film()) {
     // As Mitsuba: a scale would stretch the field of view and the clip
     // distances without saying so. A mirror (scale -1) keeps lengths.
     for (const Vec3 axis : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
       if (std::abs(length(to_world_.vector(axis)) - 1) > 1e-3f)
         throw props.error("to_world", "must not scale (a camera's field of view is set by fov, not by a scale)");
-    const float fov = props.get_float("fov");
-    if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
     if (!(near_ > 0 && far_ > near_)) throw props.error("far_clip", "need 0 < near_clip < far_clip");
-    const Vec2i full = film()->full_size(), crop = film()->crop_offset();
-    const float w = float(full.x), h = float(full.y);
-    // As Mitsuba: the principal point's offset from the film's centre, in
-    // fractions of the film's width and height.
-    const float ppx = props.get_float("principal_point_offset_x"), ppy = props.get_float("principal_point_offset_y");
-    if (!std::isfinite(ppx)) throw props.error("principal_point_offset_x", "must be finite");
-    if (!std::isfinite(ppy)) throw props.error("principal_point_offset_y", "must be finite");
-    // Raster positions of the crop window map to [0, 1]^2 over the film as
-    // u = (raster + crop offset) / size + principal point offset.
-    size_ = {w, h};
-    crop_ = {float(crop.x), float(crop.y)};
-    principal_point_ = {ppx, ppy};
-    const std::string axis = props.get_string("fov_axis");
-    const float t = std::tan(fov * kPi / 360);
-    if (axis == "x" || (axis == "smaller" && w <= h) || (axis == "larger" && w > h)) {
-      tan_x_ = t;
-      tan_y_ = t * h / w;
-    } else if (axis == "y" || axis == "smaller" || axis == "larger") {
-      tan_y_ = t;
-      tan_x_ = t * w / h;
-    } else if (axis == "diagonal") {
-      const float d = std::sqrt(w * w + h * h);
-      tan_x_ = t * w / d;
-      tan_y_ = t * h / d;
+    if (thin_lens) {
+      lens_radius_ = props.get_float("aperture_radius");
+      if (!(lens_radius_ >= 0) || !std::isfinite(lens_radius_))
+        throw props.error("aperture_radius", "must be zero or more (zero is a pinhole)");
+      focus_ = props.has("focus_distance") ? props.get_float("focus_distance") : far_;
+      if (!(focus_ > 0) || !std::isfinite(focus_)) throw props.error("focus_distance", "must be positive");
+      lens_area_ = lens_radius_ > 0 ? kPi * lens_radius_ * lens_radius_ : 1;
     } else {
-      throw props.error("fov_axis", "must be x, y, diagonal, smaller or larger, not '" + axis + "'");
+      props.get_float("focus_distance");
     }
     origin_ = to_world_.point({0, 0, 0});
+    right_ = to_world_.vector({1, 0, 0});
+    up_ = to_world_.vector({0, 1, 0});
     forward_ = normalize(to_world_.vector({0, 0, 1}));
-    // The crop window's part of the image plane at distance 1: importance
-    // integrates to one over what is rendered.
-    image_plane_area_ = 4 * tan_x_ * tan_y_ * (float(film()->width()) / w) * (float(film()->height()) / h);
   }
 
-  Ray generate_ray(Vec2 raster, Vec2) const override {
-    const Vec2 u{(raster.x + crop_.x) / size_.x + principal_point_.x,
-                 (raster.y + crop_.y) / size_.y + principal_point_.y};
-    const Vec3 local{-(2 * u.x - 1) * tan_x_, -(2 * u.y - 1) * tan_y_, 1};
-    const Vec3 d_local = normalize(local);
-    const Vec3 d = normalize(to_world_.vector(d_local));
-    return {origin_, d, far_ / d_local.z, near_ / d_local.z};
+ public:
+  bool has_lens() const override { return lens_radius_ > 0; }
+
+  Ray generate_ray(Vec2 raster, Vec2 u_lens) const override {
+    const Vec3 on_plane = projection_.plane_point(raster);
+    if (lens_radius_ == 0) {
+      const Vec3 d_local = normalize(on_plane);
+      return {origin_, normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z};
+    }
+    const Vec2 lens = square_to_uniform_disk_concentric(u_lens) * lens_radius_;
+    const Vec3 d_local = normalize(on_plane * focus_ - Vec3(lens.x, lens.y, 0));
+    return {lens_point(lens), normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z};
   }
 
   Color We(const Ray& ray, Vec2* raster) const override {
     const float cos_theta = dot(ray.d, forward_);
-    if (cos_theta <= 0 || !to_raster(ray.d, raster)) return {};
+    if (cos_theta <= 0 || !to_raster(ray, cos_theta, raster)) return {};
     const float cos2 = cos_theta * cos_theta;
-    return Color(1 / (image_plane_area_ * cos2 * cos2));
+    return Color(1 / (projection_.plane_area() * lens_area_ * cos2 * cos2));
   }
 
   void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const override {
@@ -97,15 +88,17 @@ class PerspectiveSensor final : public Sensor {
     Vec2 raster;
     *pdf_pos = 0;
     *pdf_dir = 0;
-    if (cos_theta <= 0 || !to_raster(ray.d, &raster)) return;
-    *pdf_pos = 1;
-    *pdf_dir = 1 / (image_plane_area_ * cos_theta * cos_theta * cos_theta);
+    if (cos_theta <= 0 || !to_raster(ray, cos_theta, &raster)) return;
+    *pdf_pos = 1 / lens_area_;
+    *pdf_dir = 1 / (projection_.plane_area() * cos_theta * cos_theta * cos_theta);
   }
 
   ClipPlanes clip_planes() const override { return {origin_, forward_, near_, far_}; }
 
-  std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2) const override {
-    Vec3 wi = origin_ - ref.p;
+  std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2 u_lens) const override {
+    const Vec2 lens = square_to_uniform_disk_concentric(u_lens) * lens_radius_;
+    const Vec3 p_lens = lens_radius_ > 0 ? lens_point(lens) : origin_;
+    Vec3 wi = p_lens - ref.p;
     const float dist2 = squared_length(wi);
     if (dist2 == 0) return std::nullopt;
     wi = wi / std::sqrt(dist2);
@@ -113,43 +106,63 @@ class PerspectiveSensor final : public Sensor {
     const float z = -dot(wi, forward_) * std::sqrt(dist2);
     if (z < near_ || z > far_) return std::nullopt;
     Vec2 raster;
-    const Color importance = We({origin_, -wi, kInfinity}, &raster);
+    const Color importance = We({p_lens, -wi, kInfinity}, &raster);
     if (importance.is_black()) return std::nullopt;
     const float cos_lens = dot(-wi, forward_);
-    return WiSample{wi, importance, dist2 / cos_lens, origin_, raster};
+    return WiSample{wi, importance, dist2 / (cos_lens * lens_area_), p_lens, raster};
   }
 
  private:
-  bool to_raster(Vec3 d_world, Vec2* raster) const {
-    const Vec3 local = to_camera_.vector(d_world);
-    if (local.z <= 0) return false;
-    const float x = local.x / local.z, y = local.y / local.z;
-    raster->x = ((1 - x / tan_x_) * 0.5f - principal_point_.x) * size_.x - crop_.x;
-    raster->y = ((1 - y / tan_y_) * 0.5f - principal_point_.y) * size_.y - crop_.y;
-    return raster->x >= 0 && raster->x < film()->width() && raster->y >= 0 && raster->y < film()->height();
+  Vec3 lens_point(Vec2 lens) const { return origin_ + right_ * lens.x + up_ * lens.y; }
+
+  // Where a ray leaving the lens lands on the film: through the point it
+  // meets at the focus depth, as the pinhole would see that point.
+  bool to_raster(const Ray& ray, float cos_theta, Vec2* raster) const {
+    const Vec3 d = to_camera_.vector(ray.d);
+    if (lens_radius_ == 0) return projection_.to_raster(d, raster);
+    const Vec3 o = to_camera_.vector(ray.o - origin_);
+    return projection_.to_raster(o + d * (focus_ / cos_theta), raster);
   }
 
   Transform to_world_, to_camera_;
   float near_, far_;
-  float tan_x_ = 1, tan_y_ = 1;
-  Vec2 size_{1, 1}, crop_, principal_point_;
-  Vec3 origin_, forward_;
-  float image_plane_area_ = 4;
+  PerspectiveProjection projection_;
+  float lens_radius_ = 0, focus_ = 1, lens_area_ = 1;
+  Vec3 origin_, right_, up_, forward_;
 };
+
+class PerspectiveSensor final : public ProjectiveSensor {
+ public:
+  explicit PerspectiveSensor(const Properties& props) : ProjectiveSensor(props, false) {}
+};
+
+class ThinLensSensor final : public ProjectiveSensor {
+ public:
+  explicit ThinLensSensor(const Properties& props) : ProjectiveSensor(props, true) {}
+};
+
+std::vector<ParamSpec> projective_params(std::vector<ParamSpec> lens) {
+  std::vector<ParamSpec> params = perspective_projection_params();
+  params.insert(params.end(), lens.begin(), lens.end());
+  const std::vector<ParamSpec> clip = clip_params();
+  params.insert(params.end(), clip.begin(), clip.end());
+  params.push_back(
+      {"to_world", ParamType::Transform, "", "camera placement; it looks along local +z, with +y up and +x left"});
+  return params;
+}
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(
-    PerspectiveSensor, "sensor", "perspective",
-    {{"fov", ParamType::Float, "39.597755", "field of view in degrees along fov_axis (a 50 mm lens on 35 mm film)"},
-     {"fov_axis", ParamType::String, "x", "axis the fov applies to: x, y, diagonal, smaller or larger"},
-     {"near_clip", ParamType::Float, "0.01", "near plane distance"},
-     {"far_clip", ParamType::Float, "10000", "far plane distance"},
-     {"focus_distance", ParamType::Float, "0", "accepted for compatibility and ignored; a pinhole is always in focus"},
-     {"principal_point_offset_x", ParamType::Float, "0",
-      "principal point's offset from the film's centre, in film widths (a shifted lens)"},
-     {"principal_point_offset_y", ParamType::Float, "0", "the same downward, in film heights"},
-     {"to_world", ParamType::Transform, "", "camera placement; it looks along local +z, with +y up and +x left"}},
-    {"film", "sampler"});
+CAUSTICA_REGISTER_PLUGIN(PerspectiveSensor, "sensor", "perspective",
+                         projective_params({{"focus_distance", ParamType::Float, "0",
+                                             "accepted for compatibility and ignored; a pinhole is always in focus"}}),
+                         {"film", "sampler"});
+
+CAUSTICA_REGISTER_PLUGIN(ThinLensSensor, "sensor", "thinlens",
+                         projective_params({{"aperture_radius", ParamType::Float, std::nullopt,
+                                             "the lens's radius in scene units"},
+                                            {"focus_distance", ParamType::Float, std::nullopt,
+                                             "distance from the lens to the plane in focus (default: far_clip)"}}),
+                         {"film", "sampler"});
 
 }  // namespace caustica

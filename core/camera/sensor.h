@@ -2,15 +2,19 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/film/film.h"
 #include "core/geometry/ray.h"
 #include "core/geometry/reference_point.h"
 #include "core/math/color.h"
+#include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
 #include "core/sampling/sampler.h"
 
 namespace caustica {
+
+class Properties;
 
 // Importance arriving at a reference point from the camera, for connecting
 // light paths to the lens.
@@ -38,6 +42,9 @@ class Sensor : public Plugin {
   // Whether generate_ray and sample_Wi use their lens sample; a pinhole
   // does not, and then none is drawn.
   virtual bool has_lens() const { return false; }
+  // Whether every ray leaves along one direction (orthographic): then
+  // pdf_We's density is per unit area of the film, pdf_dir being a delta.
+  virtual bool delta_direction() const { return false; }
   // Importance emitted along `ray` (which starts on the lens) and its raster position.
   virtual Color We(const Ray& ray, Vec2* raster) const = 0;
   virtual void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const = 0;
@@ -48,14 +55,16 @@ class Sensor : public Plugin {
   const std::shared_ptr<Sampler>& sampler() const { return sampler_; }
 
  protected:
-  void set_film_and_sampler(std::shared_ptr<Film> film, std::shared_ptr<Sampler> sampler) {
-    film_ = std::move(film);
-    sampler_ = std::move(sampler);
-  }
+  // Takes the nested film and sampler, or an hdrfilm and an independent
+  // sampler with their default parameters.
+  explicit Sensor(const Properties& props);
 
  private:
   std::shared_ptr<Film> film_;
   std::shared_ptr<Sampler> sampler_;
 };
+
+// near_clip and far_clip, as every sensor declares them.
+std::vector<ParamSpec> clip_params();
 
 }  // namespace caustica

@@ -58,6 +58,7 @@ std::string lobe_names(uint32_t lobes) {
 SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   SceneFeatures f;
   f.textures = textures;
+  f.camera = scene.sensor().plugin_name();
   f.pinhole = !scene.sensor().has_lens();
   for (const auto& e : scene.emitters()) {
     f.area_lights += e->is_area();
@@ -93,8 +94,8 @@ std::string describe(const SceneFeatures& f) {
   std::ostringstream out;
   out << "bsdf lobes: " << lobe_names(f.lobes) << "\nlights: " << f.area_lights << " area, " << f.point_lights
       << " point, " << f.directional_lights << " directional, " << f.environment_lights
-      << " environment\ntextures: " << (f.textures ? "yes" : "no")
-      << "\ncamera: " << (f.pinhole ? "pinhole (no lens to sample)" : "lens")
+      << " environment\ntextures: " << (f.textures ? "yes" : "no") << "\ncamera: " << f.camera
+      << (f.pinhole ? " (no lens to sample)" : " (a lens to sample)")
       << "\ncaustic paths: " << (f.caustic_paths ? "possible (" : "impossible (") << f.caustics_reason << ")\n";
   return out.str();
 }

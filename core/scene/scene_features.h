@@ -13,6 +13,7 @@ struct SceneFeatures {
   uint32_t lobes = 0;  // BsdfLobe flags of every surface together
   int area_lights = 0, point_lights = 0, directional_lights = 0, environment_lights = 0;
   bool textures = false;
+  std::string camera;   // the sensor's plugin name
   bool pinhole = true;  // no lens to sample
   // Caustic paths (light focused through mirrors or glass onto a diffuse or
   // glossy surface, L S+ D): possible when some light reaches a surface with

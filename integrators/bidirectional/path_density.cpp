@@ -43,7 +43,11 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
   switch (cur.kind) {
     case PathVertex::Kind::Camera: {
       float pdf_pos = 0, pdf_dir = 0;
-      scene.sensor().pdf_We({cur.p(), direction_to(cur, next), kInfinity}, &pdf_pos, &pdf_dir);
+      const Vec3 d = direction_to(cur, next);
+      scene.sensor().pdf_We({cur.p(), d, kInfinity}, &pdf_pos, &pdf_dir);
+      // Parallel rays spread over the film's area reach next's surface with
+      // the film's density, projected.
+      if (scene.sensor().delta_direction()) return next.has_normal() ? pdf_pos * abs_dot(next.si.ng, d) : pdf_pos;
       return solid_angle_to_area(cur, next, pdf_dir);
     }
     case PathVertex::Kind::Light:

@@ -55,8 +55,9 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
   camera.kind = PathVertex::Kind::Camera;
   camera.si.p = ray.o;
   camera.beta = Color(1);
-  // A pinhole's importance and densities cancel: every camera ray carries
-  // weight one, the filter's weight being the film's business.
+  // Every camera's importance and the densities it samples rays with cancel
+  // (pinhole, thin lens, orthographic): every camera ray carries weight one,
+  // the filter's weight being the film's business.
   SubpathRecorder recorder(scene, TransportMode::Radiance, path);
   random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, recorder);
 }

@@ -1,3 +1,4 @@
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -28,6 +29,25 @@ TEST(PerspectiveSensor, FovAppliesToTheChosenAxis) {
   const auto smaller = camera_scene("smaller", 200, 100);  // the height is smaller
   const Sensor& cs = smaller->sensor();
   EXPECT_NEAR(angle_deg(cs.generate_ray({100, 0}, {}).d, cs.generate_ray({100, 100}, {}).d), 50, 1e-3);
+}
+
+// As Mitsuba: a 35 mm-equivalent focal length sets the field of view across
+// the diagonal of 36 x 24 mm film; on a 3:2 film 50mm spans 2 atan(36 / 100)
+// horizontally.
+TEST(PerspectiveSensor, FocalLengthSetsTheDiagonalFov) {
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><sensor type='perspective'><string name='focal_length' value='50mm'/>"
+      "<film type='hdrfilm'><integer name='width' value='300'/><integer name='height' value='200'/></film>"
+      "</sensor></scene>");
+  const Sensor& cam = scene->sensor();
+  EXPECT_NEAR(angle_deg(cam.generate_ray({0, 100}, {}).d, cam.generate_ray({300, 100}, {}).d),
+              2 * std::atan(0.36) * 180 / M_PI, 1e-3);
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><sensor type='perspective'><string name='focal_length' "
+                               "value='fifty'/></sensor></scene>"),
+              testing::HasSubstr("must be a positive length in millimetres"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='30'/>"
+                               "<string name='focal_length' value='50mm'/></sensor></scene>"),
+              testing::HasSubstr("give either fov or focal_length, not both"));
 }
 
 TEST(PerspectiveSensor, CentreLooksAtTargetAndImageXGoesRight) {

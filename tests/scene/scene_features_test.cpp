@@ -60,7 +60,7 @@ TEST(SceneFeatures, DescribedForInfo) {
   const std::string text = describe(cornell("cornell-box-glass")->features());
   EXPECT_THAT(text, HasSubstr("bsdf lobes: diffuse reflection, delta reflection, delta transmission\n"));
   EXPECT_THAT(text, HasSubstr("lights: 1 area, 0 point, 0 directional, 0 environment\n"));
-  EXPECT_THAT(text, HasSubstr("camera: pinhole (no lens to sample)\n"));
+  EXPECT_THAT(text, HasSubstr("camera: perspective (no lens to sample)\n"));
   EXPECT_THAT(text, HasSubstr("caustic paths: possible ("));
 }
 

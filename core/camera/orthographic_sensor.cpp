@@ -1,0 +1,108 @@
+// orthographic: parallel rays along local +z from a film that covers
+// [-1, 1] in local x and [-h/w, h/w] in local y (as Mitsuba's does); a scale
+// in to_world sets the size of what is seen.
+//
+//   <sensor type="orthographic">
+//       <transform name="to_world">
+//           <scale x="2" y="2"/>
+//           <lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/>
+//       </transform>
+//   </sensor>
+
+#include <cmath>
+
+#include "core/camera/sensor.h"
+#include "core/math/transform.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+namespace {
+
+// Every ray travels along `forward`: the importance is a delta in
+// direction times 1 / A per unit area of the film (A its rendered window's
+// area in the scene), and a light path reaches the film only by
+// projecting onto it along -forward.
+class OrthographicSensor final : public Sensor {
+ public:
+  explicit OrthographicSensor(const Properties& props)
+      : Sensor(props), near_(props.get_float("near_clip")), far_(props.get_float("far_clip")) {
+    if (!(near_ >= 0 && far_ > near_)) throw props.error("far_clip", "need 0 <= near_clip < far_clip");
+    const Transform to_world = props.get_transform("to_world");
+    origin_ = to_world.point({0, 0, 0});
+    axis_x_ = to_world.vector({1, 0, 0});
+    axis_y_ = to_world.vector({0, 1, 0});
+    const Vec3 z = to_world.vector({0, 0, 1});
+    // (The loader refuses singular transforms, so no axis is zero.)
+    const float lx = length(axis_x_), ly = length(axis_y_);
+    forward_ = normalize(z);
+    // Rays leave the film at right angles; a shear would tilt them.
+    if (std::abs(dot(axis_x_, axis_y_)) > 1e-3f * lx * ly || std::abs(dot(axis_x_, forward_)) > 1e-3f * lx ||
+        std::abs(dot(axis_y_, forward_)) > 1e-3f * ly)
+      throw props.error("to_world", "must not shear (the film's axes and the view direction stay at right angles)");
+    const Vec2i full = film()->full_size(), crop = film()->crop_offset();
+    size_ = {float(full.x), float(full.y)};
+    crop_ = {float(crop.x), float(crop.y)};
+    window_ = {float(film()->width()), float(film()->height())};
+    aspect_y_ = size_.y / size_.x;
+    area_ = lx * ly * 4 * aspect_y_ * (window_.x / size_.x) * (window_.y / size_.y);
+  }
+
+  Ray generate_ray(Vec2 raster, Vec2) const override {
+    const float x = 1 - 2 * (raster.x + crop_.x) / size_.x, y = (1 - 2 * (raster.y + crop_.y) / size_.y) * aspect_y_;
+    return {origin_ + axis_x_ * x + axis_y_ * y, forward_, far_, near_};
+  }
+
+  // The ray's direction is taken to be `forward` (the delta); what counts
+  // is where it leaves the film.
+  Color We(const Ray& ray, Vec2* raster) const override {
+    if (dot(ray.d, forward_) <= 0 || !to_raster(ray.o, raster)) return {};
+    return Color(1 / area_);
+  }
+
+  void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const override {
+    Vec2 raster;
+    *pdf_pos = dot(ray.d, forward_) > 0 && to_raster(ray.o, &raster) ? 1 / area_ : 0;
+    *pdf_dir = 0;  // a delta, which no other strategy can produce
+  }
+
+  bool delta_direction() const override { return true; }
+
+  ClipPlanes clip_planes() const override { return {origin_, forward_, near_, far_}; }
+
+  std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2) const override {
+    const float depth = dot(ref.p - origin_, forward_);
+    if (depth < near_ || depth > far_) return std::nullopt;
+    const Vec3 on_film = ref.p - forward_ * depth;
+    Vec2 raster;
+    if (!to_raster(on_film, &raster)) return std::nullopt;
+    return WiSample{-forward_, Color(1 / area_), 1, on_film, raster};
+  }
+
+ private:
+  // The raster position of a point, projected onto the film along forward.
+  bool to_raster(Vec3 p, Vec2* raster) const {
+    const Vec3 rel = p - origin_;
+    const float x = dot(rel, axis_x_) / squared_length(axis_x_), y = dot(rel, axis_y_) / squared_length(axis_y_);
+    raster->x = (1 - x) * 0.5f * size_.x - crop_.x;
+    raster->y = (1 - y / aspect_y_) * 0.5f * size_.y - crop_.y;
+    return raster->x >= 0 && raster->x < window_.x && raster->y >= 0 && raster->y < window_.y;
+  }
+
+  float near_, far_;
+  Vec3 origin_, axis_x_, axis_y_, forward_;
+  Vec2 size_{1, 1}, crop_, window_{1, 1};
+  float aspect_y_ = 1, area_ = 4;
+};
+
+std::vector<ParamSpec> orthographic_params() {
+  std::vector<ParamSpec> params = clip_params();
+  params.push_back({"to_world", ParamType::Transform, "",
+                    "placement and size: the film spans local x in [-1, 1] and y in [-h/w, h/w], looking along +z"});
+  return params;
+}
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(OrthographicSensor, "sensor", "orthographic", orthographic_params(), {"film", "sampler"});
+
+}  // namespace caustica
