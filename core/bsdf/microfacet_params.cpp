@@ -1,7 +1,9 @@
 #include "core/bsdf/microfacet_params.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/registry/properties.h"
 #include "core/texture/texture_parameter.h"
@@ -47,10 +49,14 @@ MicrofacetRoughness::MicrofacetRoughness(const Properties& props) : type_(distri
     const ValueRange range = texture->range();
     if (!(range.lowest >= 0) || !std::isfinite(range.highest))
       throw props.error(source, "roughness must be finite and not negative");
-    return texture;
+    return std::pair{texture, range};
   };
-  alpha_u_ = roughness("alpha_u");
-  alpha_v_ = roughness("alpha_v");
+  const auto [u, u_range] = roughness("alpha_u");
+  const auto [v, v_range] = roughness("alpha_v");
+  alpha_u_ = u;
+  alpha_v_ = v;
+  lowest_ = std::min(u_range.lowest, v_range.lowest);
+  highest_ = std::max(u_range.highest, v_range.highest);
 }
 
 MicrofacetDistribution microfacet_from(const Properties& props) {

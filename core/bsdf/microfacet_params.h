@@ -32,10 +32,15 @@ class MicrofacetRoughness {
   MicrofacetDistribution at(Vec2 uv) const {
     return {type_, alpha_u_->eval(uv).luminance(), alpha_v_->eval(uv).luminance()};
   }
+  MicrofacetDistribution::Type type() const { return type_; }
+  // Bounds on every roughness the textures give.
+  float lowest() const { return lowest_; }
+  float highest() const { return highest_; }
 
  private:
   MicrofacetDistribution::Type type_;
   std::shared_ptr<Texture> alpha_u_, alpha_v_;
+  float lowest_ = 0, highest_ = 0;
 };
 
 }  // namespace caustica

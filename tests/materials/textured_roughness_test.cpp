@@ -1,5 +1,6 @@
-// Roughness given as a texture (roughconductor, roughdielectric): at each
-// point the material is the one with that point's roughness as a constant.
+// Roughness given as a texture (roughconductor, roughdielectric,
+// roughplastic): at each point the material is the one with that point's
+// roughness as a constant.
 // A checkerboard of alpha 0.05 (where floor(2u) + floor(2v) is even) and 0.4
 // must give, at (0.25, 0.25) and (0.75, 0.25), exactly what constant alphas
 // of 0.05 and 0.4 give: eval, pdf and samples.
@@ -20,7 +21,7 @@ const char* kCheckers =
     "<float name='color1' value='0.4'/></texture>";
 
 TEST(TexturedRoughness, EachPointIsTheMaterialWithItsRoughness) {
-  for (const std::string type : {"roughconductor", "roughdielectric"}) {
+  for (const std::string type : {"roughconductor", "roughdielectric", "roughplastic"}) {
     const auto textured = test::make_bsdf("<bsdf type='" + type + "'>" + kCheckers + "</bsdf>");
     for (const auto& [uv, alpha] : {std::pair{Vec2(0.25f, 0.25f), "0.05"}, std::pair{Vec2(0.75f, 0.25f), "0.4"}}) {
       const auto plain =

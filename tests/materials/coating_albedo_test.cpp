@@ -1,0 +1,50 @@
+// The rough coating's albedo table (roughplastic's E): near alpha 0 it is
+// the smooth interface's Fresnel reflectance, written out here; across a
+// roughness range it interpolates what a table made for the one roughness
+// gives, and at the range's ends it is that table exactly.
+
+#include "core/bsdf/coating_albedo.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace caustica {
+namespace {
+
+constexpr float kEta = 1.49f;
+
+double fresnel(double mu, double eta) {
+  const double cos_t = std::sqrt(1 - (1 - mu * mu) / (eta * eta));
+  const double rs = (mu - eta * cos_t) / (mu + eta * cos_t), rp = (eta * mu - cos_t) / (eta * mu + cos_t);
+  return (rs * rs + rp * rp) / 2;
+}
+
+TEST(CoatingAlbedo, SmoothLimitIsFresnel) {
+  for (const auto type : {MicrofacetDistribution::Type::Beckmann, MicrofacetDistribution::Type::GGX}) {
+    const CoatingAlbedo e(type, 0.001f, 0.001f, kEta);
+    for (const float mu : {1.0f, 0.7f, 0.4f, 0.2f}) EXPECT_NEAR(e(0.001f, mu), fresnel(mu, kEta), 2e-3) << mu;
+  }
+}
+
+TEST(CoatingAlbedo, RangeInterpolatesSingleTables) {
+  const auto type = MicrofacetDistribution::Type::GGX;
+  const CoatingAlbedo range(type, 0.05f, 0.6f, kEta);
+  for (const float alpha : {0.05f, 0.17f, 0.33f, 0.6f}) {
+    const CoatingAlbedo single(type, alpha, alpha, kEta);
+    const bool end = alpha == 0.05f || alpha == 0.6f;
+    for (const float mu : {1.0f, 0.5f, 0.1f, 0.02f}) {
+      if (end)
+        EXPECT_EQ(range(alpha, mu), single(alpha, mu));
+      else
+        EXPECT_NEAR(range(alpha, mu), single(alpha, mu), 2e-3) << alpha << " " << mu;
+    }
+    EXPECT_NEAR(range.mean(alpha), single.mean(alpha), end ? 0 : 2e-3);
+  }
+  // Outside the range, the nearest end.
+  EXPECT_EQ(range(0.9f, 0.5f), range(0.6f, 0.5f));
+  EXPECT_EQ(range(0.0f, 0.5f), range(0.05f, 0.5f));
+}
+
+}  // namespace
+}  // namespace caustica
