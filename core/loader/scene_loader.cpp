@@ -112,9 +112,14 @@ class Instantiator {
                                        "' (available: " + join_names(Registry::instance().names(node.tag)) + ")");
     Properties props(*info, node.where);
     props.set_warnings(&warnings);
-    props.set_render_origin(render_origin_);
+    // A shapegroup's shapes stay in the group's own space; only the
+    // instances placing them move to render space.
+    props.set_render_origin(in_group_ > 0 ? Vec3d() : render_origin_);
     props.set_resolver(&resolver_);
+    const bool group = node.tag == "shape" && type == "shapegroup";
+    in_group_ += group;
     for (const XmlNode& child : node.children) add_child(props, child);
+    in_group_ -= group;
 
     std::shared_ptr<Plugin> plugin;
     try {
@@ -180,6 +185,7 @@ class Instantiator {
   Vec3d render_origin_;
   FileResolver resolver_;
   int depth_ = 0;
+  int in_group_ = 0;  // shapegroups being built around the current object
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
   std::set<std::string> building_;
@@ -227,7 +233,9 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
     if (node.tag == "ref") throw SceneError(node.where, "<ref> must be nested in an object");
     const ObjectValue obj = inst.build(node);
     if (node.tag == "shape") {
-      shapes.push_back(std::static_pointer_cast<Shape>(obj.object));
+      // A group is drawn only where instances place it.
+      if (!std::static_pointer_cast<Shape>(obj.object)->is_group())
+        shapes.push_back(std::static_pointer_cast<Shape>(obj.object));
     } else if (node.tag == "sensor") {
       if (sensor) throw SceneError(node.where, "a scene may have only one sensor");
       sensor = std::static_pointer_cast<Sensor>(obj.object);

@@ -54,8 +54,10 @@ std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  const RayHit hit{rayhit.ray.tfar, rayhit.hit.primID, {rayhit.hit.u, rayhit.hit.v}};
-  return by_geom_id_[rayhit.hit.geomID]->interaction(ray, hit);
+  const RayHit hit{rayhit.ray.tfar, rayhit.hit.primID, rayhit.hit.geomID, {rayhit.hit.u, rayhit.hit.v}};
+  // Within an instance, geomID names the geometry in its group.
+  const unsigned top = rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayhit.hit.instID[0] : rayhit.hit.geomID;
+  return by_geom_id_[top]->interaction(ray, hit);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

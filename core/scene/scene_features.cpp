@@ -70,7 +70,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   int specular_shapes = 0;
   const Shape* lit_specular = nullptr;
   for (const auto& s : scene.shapes()) {
-    const uint32_t lobes = s->bsdf()->lobes();
+    const uint32_t lobes = s->lobes();
     f.lobes |= lobes;
     receiver = receiver || (lobes & ~kDelta);
     if (!(lobes & kDelta)) continue;
@@ -85,7 +85,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
     f.caustics_reason = "no surface has a non-delta lobe to receive them";
   } else {
     f.caustic_paths = true;
-    f.caustics_reason = "a light reaches a " + lit_specular->kind() + " with a delta lobe";
+    f.caustics_reason = "a light reaches a surface with a delta lobe: " + lit_specular->kind();
   }
   return f;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/bsdf/bsdf.h"
+
 namespace caustica {
 
 namespace {
@@ -15,6 +17,8 @@ float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
 }
 
 }  // namespace
+
+uint32_t Shape::lobes() const { return bsdf_->lobes(); }
 
 PositionSample Shape::sample_seen_from(Vec3 ref, Vec2 u) const {
   PositionSample ps = sample_position(u);

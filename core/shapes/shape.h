@@ -27,7 +27,8 @@ struct PositionSample {
 struct RayHit {
   float t = kInfinity;
   unsigned prim = 0;
-  Vec2 uv;  // Embree's barycentrics for triangles, shape-defined otherwise
+  unsigned geom = 0;  // the geometry hit within an instance's group
+  Vec2 uv;            // Embree's barycentrics for triangles, shape-defined otherwise
 };
 
 // A surface in the scene: Embree geometry plus what lights and integrators
@@ -46,6 +47,12 @@ class Shape : public Plugin {
   virtual PositionSample sample_seen_from(Vec3 ref, Vec2 u) const;
   virtual float pdf_seen_from(Vec3 ref, const SurfaceInteraction& on_surface) const;
   virtual std::string kind() const = 0;
+  // A shapegroup, placed only through instances.
+  virtual bool is_group() const { return false; }
+  // An instance of a shapegroup: it cannot carry an emitter, nor sit in a group.
+  virtual bool is_instance() const { return false; }
+  // The BsdfLobe flags of what the shape reflects (an instance's are its group's).
+  virtual uint32_t lobes() const;
 
   const std::shared_ptr<Bsdf>& bsdf() const { return bsdf_; }
   const Emitter* emitter() const { return emitter_; }

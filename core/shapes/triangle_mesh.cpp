@@ -124,7 +124,7 @@ PositionSample TriangleMesh::sample_position(Vec2 u) const {
   float u_reused = 0;
   const size_t tri = area_distribution_->sample(u.x, nullptr, &u_reused);
   const Vec2 b = square_to_uniform_triangle({u_reused, u.y});
-  RayHit hit{0, unsigned(tri), {b.y, 1 - b.x - b.y}};
+  RayHit hit{0, unsigned(tri), 0, {b.y, 1 - b.x - b.y}};
   const SurfaceInteraction si = interaction(Ray{}, hit);
   return {si.p, si.p_error, si.ng, si.uv, 1 / area_};
 }

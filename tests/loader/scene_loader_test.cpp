@@ -196,8 +196,9 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(
         BadInput{"malformed XML", "<scene version='3.0.0'>\n<shape type='sphere'>\n</scene>",
                  "bad.xml:3: malformed XML"},
-        BadInput{"unknown plugin", "<scene version='3.0.0'>\n<bsdf type='velvet'/></scene>",
-                 "bad.xml:2: unknown bsdf type 'velvet' (available: bumpmap, conductor, dielectric, diffuse"},
+        BadInput{
+            "unknown plugin", "<scene version='3.0.0'>\n<bsdf type='velvet'/></scene>",
+            "bad.xml:2: unknown bsdf type 'velvet' (available: blendbsdf, bumpmap, conductor, dielectric, diffuse"},
         BadInput{"unknown parameter",
                  "<scene version='3.0.0'>\n<shape type='sphere'>\n<float name='radius' value='1'/>\n"
                  "<float name='radios' value='1'/></shape></scene>",

@@ -35,7 +35,7 @@ TEST(SceneFeatures, GlassAndMirrorBoxesHaveCausticPaths) {
   for (const char* name : {"cornell-box-glass", "cornell-box-mirror"}) {
     const auto scene = cornell(name);
     EXPECT_TRUE(scene->features().caustic_paths) << name;
-    EXPECT_THAT(scene->features().caustics_reason, HasSubstr("a light reaches a sphere with a delta lobe"));
+    EXPECT_THAT(scene->features().caustics_reason, HasSubstr("a light reaches a surface with a delta lobe: sphere"));
   }
   EXPECT_TRUE(cornell("cornell-box-glass")->features().lobes & kDeltaTransmission);
   EXPECT_TRUE(cornell("cornell-box-textured")->features().textures);

@@ -1,0 +1,80 @@
+#include "core/shapes/shape_group.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/bsdf/bsdf.h"
+#include "core/errors/scene_error.h"
+#include "core/math/constants.h"
+#include "core/registry/properties.h"
+
+namespace caustica {
+
+ShapeGroup::ShapeGroup(const Properties& props) : shapes_(props.children<Shape>("shape")) {
+  if (shapes_.empty()) throw SceneError(props.where(), "a shapegroup needs at least one shape");
+  for (const auto& s : shapes_) {
+    if (s->is_group() || s->is_instance())
+      throw SceneError(props.where(), "a shapegroup cannot hold a shapegroup or an instance (one level of instancing)");
+    if (s->emitter())
+      throw SceneError(props.where(), "a shapegroup's shapes cannot emit (instances of area lights are not supported)");
+    area_ += s->area();
+    bounds_.expand(s->bounds());
+  }
+}
+
+ShapeGroup::~ShapeGroup() {
+  for (const auto& [device, scene] : built_) rtcReleaseScene(scene);
+}
+
+RTCScene ShapeGroup::rtc_scene(RTCDevice device) const {
+  for (const auto& [d, scene] : built_)
+    if (d == device) return scene;
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  std::vector<const Shape*> by_id;
+  for (const auto& s : shapes_) {
+    const unsigned id = s->attach(device, scene);
+    if (id >= by_id.size()) by_id.resize(id + 1, nullptr);
+    by_id[id] = s.get();
+  }
+  rtcCommitScene(scene);
+  // Every device attaches the shapes in the same order, so the ids agree.
+  by_geom_id_ = std::move(by_id);
+  built_.emplace_back(device, scene);
+  return scene;
+}
+
+unsigned ShapeGroup::attach(RTCDevice, RTCScene) const {
+  throw std::logic_error("a shapegroup is placed only by instances");
+}
+
+SurfaceInteraction ShapeGroup::interaction(const Ray&, const RayHit&) const {
+  throw std::logic_error("a shapegroup is hit only through instances");
+}
+
+PositionSample ShapeGroup::sample_position(Vec2 u) const {
+  if (!(area_ > 0)) return {};
+  float target = u.x * area_;
+  for (size_t i = 0; i < shapes_.size(); ++i) {
+    const float a = shapes_[i]->area();
+    if (target < a || i + 1 == shapes_.size()) {
+      const Vec2 rescaled{std::min(a > 0 ? target / a : 0.0f, kOneMinusEpsilon), u.y};
+      PositionSample ps = shapes_[i]->sample_position(rescaled);
+      ps.pdf *= a / area_;
+      return ps;
+    }
+    target -= a;
+  }
+  return {};
+}
+
+uint32_t ShapeGroup::lobes() const {
+  uint32_t lobes = 0;
+  for (const auto& s : shapes_) lobes |= s->lobes();
+  return lobes;
+}
+
+CAUSTICA_REGISTER_PLUGIN(ShapeGroup, "shape", "shapegroup", {}, {"shape"});
+
+}  // namespace caustica
