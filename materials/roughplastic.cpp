@@ -63,6 +63,7 @@ class RoughPlasticBsdf final : public Bsdf {
         ks_(read_reflectance(props, "specular_reflectance")),
         eta_(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
         nonlinear_(props.get_bool("nonlinear")),
+        sample_visible_(props.get_bool("sample_visible")),
         coating_(roughness_.type(), roughness_.lowest(), roughness_.highest(), eta_) {
     if (!(eta_ > 0) || !std::isfinite(eta_)) throw props.error("int_ior", "int_ior / ext_ior must be positive");
     fdr_ = internal_diffuse_reflectance(eta_);
@@ -88,7 +89,7 @@ class RoughPlasticBsdf final : public Bsdf {
     Vec3 wi;
     uint32_t lobe;
     if (u_lobe < p_spec) {
-      const Vec3 m = dist.sample(wo, u);
+      const Vec3 m = sample_visible_ ? dist.sample(wo, u) : dist.sample_D(u);
       if (!(dot(wo, m) > 0)) return std::nullopt;
       wi = reflect(wo, m);
       lobe = kGlossyReflection;
@@ -121,7 +122,7 @@ class RoughPlasticBsdf final : public Bsdf {
     const float p_spec = specular_probability(dist, ctx, wo);
     if (!(p_spec >= 0)) return 0;
     const Vec3 m = normalize(wo + wi);
-    const float spec = p_spec > 0 ? dist.pdf(wo, m) / (4 * dot(wo, m)) : 0.0f;
+    const float spec = p_spec > 0 ? (sample_visible_ ? dist.pdf(wo, m) : dist.pdf_D(m)) / (4 * dot(wo, m)) : 0.0f;
     return p_spec * spec + (1 - p_spec) * cosine_hemisphere_pdf(cos_theta(wi));
   }
 
@@ -148,6 +149,7 @@ class RoughPlasticBsdf final : public Bsdf {
   std::shared_ptr<Texture> kd_, ks_;
   float eta_;
   bool nonlinear_;
+  bool sample_visible_;
   CoatingAlbedo coating_;
   float fdr_ = 0;
 };
@@ -159,7 +161,8 @@ std::vector<ParamSpec> params() {
             {"specular_reflectance", ParamType::Texture, "1", "ks, scales the coating's reflection"},
             {"int_ior", ParamType::Ior, "polypropylene", "index of refraction of the coating (a number or a name)"},
             {"ext_ior", ParamType::Ior, "air", "index of refraction of the outside medium"},
-            {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"}});
+            {"nonlinear", ParamType::Boolean, "false", "include the base's colour in internal bounces"},
+            {"sample_visible", ParamType::Boolean, "true", "sample only the facet normals visible from wo"}});
   return p;
 }
 

@@ -27,6 +27,7 @@ class OrthographicSensor final : public Sensor {
   explicit OrthographicSensor(const Properties& props)
       : Sensor(props), near_(props.get_float("near_clip")), far_(props.get_float("far_clip")) {
     if (!(near_ >= 0 && far_ > near_)) throw props.error("far_clip", "need 0 <= near_clip < far_clip");
+    if (props.has("focus_distance")) props.warn("focus_distance", "is ignored: parallel rays have no focus");
     const Transform to_world = props.get_transform("to_world");
     origin_ = to_world.point({0, 0, 0});
     axis_x_ = to_world.vector({1, 0, 0});
@@ -96,6 +97,7 @@ class OrthographicSensor final : public Sensor {
 
 std::vector<ParamSpec> orthographic_params() {
   std::vector<ParamSpec> params = clip_params();
+  params.push_back({"focus_distance", ParamType::Float, std::nullopt, "accepted and ignored (no lens)"});
   params.push_back({"to_world", ParamType::Transform, "",
                     "placement and size: the film spans local x in [-1, 1] and y in [-h/w, h/w], looking along +z"});
   return params;

@@ -27,7 +27,8 @@ float focal_length_fov(const Properties& props) {
 PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film& film) {
   if (props.has("fov") && props.has("focal_length"))
     throw props.error("focal_length", "give either fov or focal_length, not both");
-  const bool by_focal_length = props.has("focal_length");
+  // As Mitsuba: without a fov, a focal length (by default a 50 mm lens).
+  const bool by_focal_length = !props.has("fov");
   const float fov = by_focal_length ? focal_length_fov(props) : props.get_float("fov");
   if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
   const Vec2i full = film.full_size(), crop = film.crop_offset();
@@ -43,7 +44,12 @@ PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film
   crop_ = {float(crop.x), float(crop.y)};
   principal_point_ = {ppx, ppy};
   window_ = {float(film.width()), float(film.height())};
-  const std::string axis = by_focal_length ? "diagonal" : props.get_string("fov_axis");
+  const std::string given_axis = props.get_string("fov_axis");
+  if (given_axis != "x" && given_axis != "y" && given_axis != "diagonal" && given_axis != "smaller" &&
+      given_axis != "larger")
+    throw props.error("fov_axis", "must be x, y, diagonal, smaller or larger, not '" + given_axis + "'");
+  // A focal length's fov is the diagonal's, whatever fov_axis says (as Mitsuba).
+  const std::string axis = by_focal_length ? "diagonal" : given_axis;
   const float t = std::tan(fov * kPi / 360);
   if (axis == "x" || (axis == "smaller" && w <= h) || (axis == "larger" && w > h)) {
     tan_x_ = t;
@@ -51,12 +57,10 @@ PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film
   } else if (axis == "y" || axis == "smaller" || axis == "larger") {
     tan_y_ = t;
     tan_x_ = t * w / h;
-  } else if (axis == "diagonal") {
+  } else {
     const float d = std::sqrt(w * w + h * h);
     tan_x_ = t * w / d;
     tan_y_ = t * h / d;
-  } else {
-    throw props.error("fov_axis", "must be x, y, diagonal, smaller or larger, not '" + axis + "'");
   }
   // The crop window's part of the plane: importance integrates to one over
   // what is rendered.
@@ -79,10 +83,11 @@ bool PerspectiveProjection::to_raster(Vec3 d, Vec2* raster) const {
 
 std::vector<ParamSpec> perspective_projection_params() {
   return {
-      {"fov", ParamType::Float, "39.597755", "field of view in degrees along fov_axis (a 50 mm lens on 35 mm film)"},
+      {"fov", ParamType::Float, std::nullopt, "field of view in degrees along fov_axis (default: from focal_length)"},
       {"fov_axis", ParamType::String, "x", "axis the fov applies to: x, y, diagonal, smaller or larger"},
-      {"focal_length", ParamType::String, std::nullopt,
-       "instead of fov: a 35 mm-equivalent focal length such as 50mm (the fov across the diagonal of 36 x 24 mm)"},
+      {"focal_length", ParamType::String, "50mm",
+       "unless fov is given: a 35 mm-equivalent focal length, giving across the film's diagonal the fov it gives "
+       "across 36 x 24 mm film's"},
       {"principal_point_offset_x", ParamType::Float, "0",
        "principal point's offset from the film's centre, in film widths (a shifted lens)"},
       {"principal_point_offset_y", ParamType::Float, "0", "the same downward, in film heights"}};

@@ -69,7 +69,6 @@ class AreaEmitter final : public Emitter {
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area",
-                         {{"radiance", ParamType::Color, std::nullopt, "emitted radiance"}}, {});
+CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}}, {});
 
 }  // namespace caustica

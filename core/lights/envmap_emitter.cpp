@@ -18,6 +18,7 @@
 
 #include "core/image/image_input.h"
 #include "core/lights/emitter.h"
+#include "core/lights/scene_disk.h"
 #include "core/math/constants.h"
 #include "core/math/frame.h"
 #include "core/registry/properties.h"
@@ -72,11 +73,7 @@ class EnvmapEmitter final : public Emitter {
     if (any) distribution_.emplace(weights, width_, height_);
   }
 
-  void prepare(const Bounds3& bounds) override {
-    if (bounds.empty()) return;
-    center_ = bounds.center();
-    radius_ = std::max(length(bounds.hi - center_), 1e-3f) * 1.01f;
-  }
+  void prepare(const Bounds3& bounds) override { disk_.fit(bounds); }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const override {
     if (!distribution_) return std::nullopt;
@@ -86,15 +83,13 @@ class EnvmapEmitter final : public Emitter {
     // The density pdf_Li gives for wi, so that MIS weights agree exactly.
     const float pdf = pdf_direction(wi);
     if (!(pdf > 0)) return std::nullopt;
-    return LiSample{wi, texel(uv), pdf, false, ref.p + wi * (2 * radius_), {}, {}, true};
+    return LiSample{wi, texel(uv), pdf, false, ref.p + wi * disk_.beyond(), {}, {}, true};
   }
 
   float pdf_Li(const ReferencePoint&, Vec3 wi, const SurfaceInteraction&) const override { return pdf_direction(wi); }
 
   Color Le_infinite(Vec3 d) const override { return texel(to_uv(d)); }
 
-  // Emitted rays start on a disk facing the sampled direction, outside the
-  // scene's bounding sphere, so every point of the scene is reached.
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
     if (!distribution_) return std::nullopt;
     float pdf_uv = 0;
@@ -102,19 +97,16 @@ class EnvmapEmitter final : public Emitter {
     const Vec3 d = -to_world_direction(uv);
     const float pdf_dir = pdf_direction(-d);
     if (!(pdf_dir > 0)) return std::nullopt;
-    const Frame frame = Frame::from_normal(d);
-    const Vec2 disk = square_to_uniform_disk_concentric(u_pos);
-    const Vec3 o = center_ - d * radius_ + (frame.s * disk.x + frame.t * disk.y) * radius_;
-    return LeSample{{o, d, kInfinity}, {}, texel(uv), 1 / (kPi * radius_ * radius_), pdf_dir, false};
+    return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, texel(uv), disk_.pdf(), pdf_dir, false};
   }
 
   void pdf_Le(const Ray& ray, Vec3, float* pdf_pos, float* pdf_dir) const override {
-    *pdf_pos = 1 / (kPi * radius_ * radius_);
+    *pdf_pos = disk_.pdf();
     *pdf_dir = pdf_direction(-ray.d);
   }
 
   // Radiance times the solid angle of each texel, through the disk.
-  Color power() const override { return radiant_ * (kPi * radius_ * radius_); }
+  Color power() const override { return radiant_ * disk_.area(); }
   bool is_infinite() const override { return true; }
 
  private:
@@ -150,8 +142,7 @@ class EnvmapEmitter final : public Emitter {
   std::vector<Color> texels_;
   std::optional<PiecewiseConstant2D> distribution_;
   Color radiant_;  // radiance integrated over the sphere
-  Vec3 center_;
-  float radius_ = 1;
+  SceneDisk disk_;
 };
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
 #include "core/registry/file_resolver.h"
+#include "core/registry/ignored_params.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -131,6 +132,9 @@ class Instantiator {
     } catch (const std::exception& e) {
       throw SceneError(node.where, node.tag + " '" + type + "': " + e.what());
     }
+    for (const auto& [name, value] : props.values())
+      if (const IgnoredParam* ignored = find_ignored_param(node.tag, name))
+        props.warn(name, "is ignored: " + ignored->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
     if (node.tag == "emitter") {
       emitters.push_back(std::static_pointer_cast<Emitter>(plugin));

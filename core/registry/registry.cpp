@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/registry/ignored_params.h"
+
 namespace caustica {
 
 const char* to_string(ParamType t) {
@@ -48,6 +50,8 @@ Registry& Registry::instance() {
 }
 
 bool Registry::add(PluginInfo info) {
+  for (const IgnoredParam& ignored : ignored_params())
+    if (ignored.category == info.category && !info.param(ignored.spec.name)) info.params.push_back(ignored.spec);
   auto key = std::make_pair(info.category, info.name);
   if (plugins_.count(key)) throw std::logic_error("plugin registered twice: " + info.category + " " + info.name);
   plugins_.emplace(std::move(key), std::move(info));

@@ -82,6 +82,8 @@ class BitmapTexture final : public Texture {
     else
       throw props.error("wrap_mode", "unknown wrap mode '" + wrap_name + "' (accepted: repeat, mirror, clamp)");
     if (props.has("to_uv")) to_uv_ = props.get_transform("to_uv");
+    if (props.has("format")) props.warn("format", "is ignored: caustica keeps textures in float");
+    if (props.has("accel")) props.warn("accel", "is ignored: it concerns GPU texture units");
     load(props, file, props.get_bool("raw"));
   }
 
@@ -165,7 +167,9 @@ CAUSTICA_REGISTER_PLUGIN(
      {"filter_type", ParamType::String, "bilinear", "bilinear or nearest"},
      {"wrap_mode", ParamType::String, "repeat", "what (u, v) outside [0, 1]^2 read: repeat, mirror or clamp"},
      {"raw", ParamType::Boolean, "false", "use stored values without sRGB decoding"},
-     {"to_uv", ParamType::Transform, std::nullopt, "applied to (u, v, 0) before the lookup (optional)"}},
+     {"to_uv", ParamType::Transform, std::nullopt, "applied to (u, v, 0) before the lookup (optional)"},
+     {"format", ParamType::String, std::nullopt, "accepted and ignored (textures are kept in float)"},
+     {"accel", ParamType::Boolean, std::nullopt, "accepted and ignored (GPU texture units)"}},
     {});
 
 }  // namespace caustica

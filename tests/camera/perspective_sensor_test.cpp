@@ -50,6 +50,15 @@ TEST(PerspectiveSensor, FocalLengthSetsTheDiagonalFov) {
               testing::HasSubstr("give either fov or focal_length, not both"));
 }
 
+// Without fov or focal_length, Mitsuba's 50 mm lens: on the default 4:3
+// film (768x576) the diagonal's tangent 0.432666 becomes 0.346133 across x.
+TEST(PerspectiveSensor, DefaultIsAFiftyMillimetreLens) {
+  const auto scene = test::scene_from_xml("<scene version='3.0.0'><sensor type='perspective'/></scene>");
+  const Sensor& cam = scene->sensor();
+  EXPECT_NEAR(angle_deg(cam.generate_ray({0, 288}, {}).d, cam.generate_ray({768, 288}, {}).d),
+              2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / 100 * 768 / 960) * 180 / M_PI, 1e-3);
+}
+
 TEST(PerspectiveSensor, CentreLooksAtTargetAndImageXGoesRight) {
   const auto scene = camera_scene("x", 64, 48);
   const Sensor& cam = scene->sensor();

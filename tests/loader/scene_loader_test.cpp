@@ -9,6 +9,8 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/errors/interrupted.h"
+#include "core/lights/emitter.h"
+#include "core/math/constants.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -203,7 +205,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<shape type='sphere'>\n<float name='radius' value='1'/>\n"
                  "<float name='radios' value='1'/></shape></scene>",
                  "bad.xml:4: unknown parameter 'radios' for shape 'sphere' (accepted: center, radius, to_world, "
-                 "flip_normals)"},
+                 "flip_normals, silhouette_sampling_weight)"},
         BadInput{"wrong value type",
                  "<scene version='3.0.0'>\n<sensor type='perspective'>\n<string name='fov' value='wide'/>"
                  "</sensor></scene>",
@@ -267,9 +269,10 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
                  "filename='nowhere.spd'/></bsdf></scene>",
                  "bad.xml:3: <spectrum>: cannot open spectrum file 'nowhere.spd'"},
-        BadInput{"missing radiance",
-                 "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='area'/></shape></scene>",
-                 "bad.xml:3: emitter 'area' requires parameter 'radiance'"},
+        BadInput{"missing aperture",
+                 "<scene version='3.0.0'>\n<sensor type='thinlens'>\n<float name='focus_distance' value='2'/>"
+                 "</sensor></scene>",
+                 "bad.xml:2: sensor 'thinlens' requires parameter 'aperture_radius'"},
         BadInput{"top-level area emitter",
                  "<scene version='3.0.0'>\n<emitter type='area'><rgb name='radiance' value='1'/></emitter></scene>",
                  "bad.xml:2: an area emitter must be nested in a shape"},
@@ -540,6 +543,44 @@ TEST(SceneLoader, FilmParametersWithoutEffectAreSaidToBe) {
       "<string name='fileFormat' value='openexr'/></film></sensor></scene>",
       "old.xml");
   EXPECT_THAT(old.warnings, testing::ElementsAre(HasSubstr("parameter 'attach_log' of film 'hdrfilm': is ignored")));
+}
+
+// Parameters Mitsuba 3 gives every plugin of a category, and the few of
+// single plugins, that cannot change caustica's image: accepted, each with a
+// line saying why it is ignored.
+TEST(SceneLoader, MitsubaParametersWithoutEffectAreSaidToBe) {
+  const LoadedScene scene = load_scene_string(
+      "<scene version='3.0.0'><integrator type='path'>\n<integer name='samples_per_pass' value='4'/></integrator>"
+      "<sensor type='orthographic'>\n<float name='shutter_close' value='1'/>\n"
+      "<float name='focus_distance' value='3'/></sensor>"
+      "<shape type='sphere'>\n<float name='silhouette_sampling_weight' value='2'/>"
+      "<bsdf type='diffuse'><texture type='bitmap' name='reflectance'>\n<string name='format' value='fp16'/>"
+      "<string name='filename' value='" +
+          std::string(CAUSTICA_SOURCE_DIR) +
+          "/scenes/textures/bumps.png'/></texture></bsdf></shape>"
+          "<emitter type='point'>\n<float name='sampling_weight' value='3'/></emitter></scene>",
+      "ignored.xml");
+  EXPECT_THAT(
+      scene.warnings,
+      testing::UnorderedElementsAre(
+          "ignored.xml:2: parameter 'samples_per_pass' of integrator 'path': is ignored: the image does not depend "
+          "on how its samples are split into passes",
+          "ignored.xml:3: parameter 'shutter_close' of sensor 'orthographic': is ignored: nothing in a caustica "
+          "scene moves, so the shutter's interval changes nothing",
+          "ignored.xml:4: parameter 'focus_distance' of sensor 'orthographic': is ignored: parallel rays have no "
+          "focus",
+          "ignored.xml:5: parameter 'silhouette_sampling_weight' of shape 'sphere': is ignored: it weighs "
+          "silhouette sampling in differentiable rendering, which caustica does not do",
+          "ignored.xml:6: parameter 'format' of texture 'bitmap': is ignored: caustica keeps textures in float",
+          "ignored.xml:7: parameter 'sampling_weight' of emitter 'point': is ignored: caustica chooses lights in "
+          "proportion to their power; the image is the same, only its noise differs"));
+}
+
+// As Mitsuba: an area light without a radiance gives 1.
+TEST(SceneLoader, AreaLightRadianceDefaultsToOne) {
+  const LoadedScene scene = load_scene_string(
+      "<scene version='3.0.0'><shape type='sphere'><emitter type='area'/></shape></scene>", "area.xml");
+  EXPECT_FLOAT_EQ(scene->emitters().front()->power().g, 4 * kPi * kPi);  // pi L times the unit sphere's 4 pi
 }
 
 // Stored relative to the camera, a small rectangle far from it is finer

@@ -18,7 +18,8 @@ const float kThetas[] = {0.0f, 0.7f, 1.4f, 1.5607f};  // down to 0.01 rad from g
 const char* const kDistributions[] = {"beckmann", "ggx"};
 const float kAlphas[] = {0.05f, 0.3f, 0.8f};
 
-// Chi-square tests in this file: 2 distributions x 3 roughnesses x 4 incident angles (counted in kMaterialChi2Tests).
+// Chi-square tests in this file: 2 distributions x 3 roughnesses x 4 incident angles, and 2 incident angles
+// sampling all facet normals (counted in kMaterialChi2Tests).
 const double kAlpha = test::material_chi2_alpha();
 
 std::shared_ptr<Bsdf> rough(const std::string& distribution, float alpha, const std::string& extra = "") {
@@ -53,6 +54,24 @@ TEST(RoughPlasticBsdf, SamplesFollowThePdf) {
         EXPECT_GT(integral, 0.5) << distribution << " " << alpha << " theta " << theta;
       }
     }
+}
+
+// sample_visible = false draws facet normals from D(m) cos(theta_m) instead:
+// the same material (eval unchanged), a different but consistent sampler.
+TEST(RoughPlasticBsdf, SamplingAllFacetNormals) {
+  const auto visible = rough("ggx", 0.3f, kColoured);
+  const auto all = rough("ggx", 0.3f, kColoured + "<boolean name='sample_visible' value='false'/>");
+  for (float theta : {0.3f, 1.3f}) {
+    const Vec3 wo = direction(theta);
+    const auto chi2 = test::chi2_bsdf(*all, wo, {}, {.sample_count = 200000, .bins_u = 40, .bins_v = 80});
+    EXPECT_GT(chi2.p_value, kAlpha) << "theta " << theta << "\n" << chi2.report;
+    const auto c = test::check_samples(*all, wo, {}, 2000);
+    EXPECT_LT(c.max_f_error, 1e-6);
+    EXPECT_LT(c.max_pdf_error, 1e-6);
+    const Vec3 wi = direction(0.5f, 2.5f);
+    EXPECT_EQ(all->eval({}, wo, wi), visible->eval({}, wo, wi));
+    EXPECT_NE(all->pdf({}, wo, wi), visible->pdf({}, wo, wi));
+  }
 }
 
 TEST(RoughPlasticBsdf, WhiteFurnace) {
