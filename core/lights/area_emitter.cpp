@@ -1,6 +1,7 @@
-// area: makes the shape it is nested in emit, uniformly and diffusely, from
-// the side its normals point to (the geometric normal, turned to the side of
-// the shading normal where a mesh has vertex normals).
+// area: makes the shape it is nested in emit diffusely from the side its
+// normals point to (the geometric normal, turned to the side of the shading
+// normal where a mesh has vertex normals), uniformly or with a radiance
+// texture over the shape's (u, v).
 //
 //   <shape type="rectangle">
 //       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
@@ -18,7 +19,8 @@ namespace {
 
 class AreaEmitter final : public Emitter {
  public:
-  explicit AreaEmitter(const Properties& props) : radiance_(read_emission(props, "radiance")), where_(props.where()) {}
+  explicit AreaEmitter(const Properties& props)
+      : radiance_(read_emission_texture(props, "radiance")), where_(props.where()) {}
 
   void attach_shape(const Shape* shape) override {
     if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");
@@ -33,7 +35,7 @@ class AreaEmitter final : public Emitter {
     const Vec3 wi = normalize(ps.p - ref.p);
     // Emission is one-sided: a point seen from behind sends nothing.
     if (dot(wi, ps.n) >= 0) return std::nullopt;
-    return LiSample{wi, radiance_, ps.pdf, false, ps.p, ps.p_error, ps.n, false};
+    return LiSample{wi, radiance_->eval(ps.uv), ps.pdf, false, ps.p, ps.p_error, ps.n, false};
   }
 
   float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const override {
@@ -41,7 +43,9 @@ class AreaEmitter final : public Emitter {
     return shape_->pdf_seen_from(ref.p, on_light);
   }
 
-  Color L(const SurfaceInteraction& si, Vec3 w) const override { return dot(w, si.ng) > 0 ? radiance_ : Color(); }
+  Color L(const SurfaceInteraction& si, Vec3 w) const override {
+    return dot(w, si.ng) > 0 ? radiance_->eval(si.uv) : Color();
+  }
 
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
     const PositionSample ps = shape_->sample_position(u_pos);
@@ -50,8 +54,12 @@ class AreaEmitter final : public Emitter {
     const float pdf_dir = cosine_hemisphere_pdf(local.z);
     if (pdf_dir <= 0) return std::nullopt;
     const Vec3 d = Frame::from_normal(ps.n).to_world(local);
-    return LeSample{
-        {offset_ray_origin(ps.p, ps.p_error, ps.n, d), d, kInfinity}, ps.n, radiance_, ps.pdf, pdf_dir, false};
+    return LeSample{{offset_ray_origin(ps.p, ps.p_error, ps.n, d), d, kInfinity},
+                    ps.n,
+                    radiance_->eval(ps.uv),
+                    ps.pdf,
+                    pdf_dir,
+                    false};
   }
 
   void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const override {
@@ -59,16 +67,20 @@ class AreaEmitter final : public Emitter {
     *pdf_dir = cosine_hemisphere_pdf(dot(ray.d, n));
   }
 
-  Color power() const override { return radiance_ * (kPi * shape_->area()); }
+  // Exact for a constant radiance; with a texture, its mean over (u, v)
+  // stands for its mean over the surface (light selection needs only a
+  // positive weight for each light, not the exact power).
+  Color power() const override { return radiance_->mean() * (kPi * shape_->area()); }
 
  private:
-  Color radiance_;
+  std::shared_ptr<Texture> radiance_;
   SourceLocation where_;
   const Shape* shape_ = nullptr;
 };
 
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area", {{"radiance", ParamType::Color, "1", "emitted radiance"}}, {});
+CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area",
+                         {{"radiance", ParamType::Texture, "1", "emitted radiance (a colour or a texture)"}}, {});
 
 }  // namespace caustica

@@ -1,6 +1,9 @@
 // spot: a point light shining into a cone around its local +z. Full
 // intensity within beam_width of the axis, falling off linearly in angle to
-// nothing at cutoff_angle (as Mitsuba's spot does).
+// nothing at cutoff_angle (as Mitsuba's spot does). An optional `texture` is
+// projected through the cone, as Mitsuba projects it: a local direction d
+// reads (u, v) = (1/2 + d.x / (2 d.z tan(cutoff)), 1/2 + d.y / (2 d.z tan(cutoff))),
+// so the texture's square spans the cone's cross-section.
 //
 //   <emitter type="spot">
 //       <rgb name="intensity" value="10"/>
@@ -23,6 +26,7 @@ class SpotEmitter final : public Emitter {
  public:
   explicit SpotEmitter(const Properties& props)
       : intensity_(read_emission(props, "intensity")),
+        texture_(props.has("texture") ? read_emission_texture(props, "texture") : nullptr),
         to_world_(props.get_transform("to_world")),
         to_local_(to_world_.inverse()),
         position_(to_world_.point(Vec3d())) {
@@ -34,6 +38,7 @@ class SpotEmitter final : public Emitter {
     beam_ = beam * kPi / 180;
     cos_cutoff_ = std::cos(cutoff_);
     cos_beam_ = std::cos(beam_);
+    uv_scale_ = 0.5f / std::tan(std::min(cutoff_, 0.5f * kPi * kOneMinusEpsilon));
   }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
@@ -41,48 +46,61 @@ class SpotEmitter final : public Emitter {
     const float dist2 = squared_length(wi);
     if (dist2 == 0) return std::nullopt;
     wi = wi / std::sqrt(dist2);
-    const float f = falloff(-wi);
-    if (f == 0) return std::nullopt;
-    return LiSample{wi, intensity_ * (f / dist2), 1, true, position_, {}, {}, false};
+    const Color I = emitted(-wi);
+    if (I.is_black()) return std::nullopt;
+    return LiSample{wi, I / dist2, 1, true, position_, {}, {}, false};
   }
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
 
   std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir) const override {
     const Vec3 d = normalize(to_world_.vector(square_to_uniform_cone(u_dir, cos_cutoff_)));
-    const float f = falloff(d);
-    if (f == 0) return std::nullopt;
-    return LeSample{{position_, d, kInfinity}, {}, intensity_ * f, 1, uniform_cone_pdf(cos_cutoff_), true};
+    const Color I = emitted(d);
+    if (I.is_black()) return std::nullopt;
+    return LeSample{{position_, d, kInfinity}, {}, I, 1, uniform_cone_pdf(cos_cutoff_), true};
   }
 
   void pdf_Le(const Ray& ray, Vec3, float* pdf_pos, float* pdf_dir) const override {
     *pdf_pos = 1;  // a delta position, reported as sample_Le reports it
-    *pdf_dir = falloff(ray.d) > 0 ? uniform_cone_pdf(cos_cutoff_) : 0;
+    *pdf_dir = falloff(normalize(to_local_.vector(ray.d))) > 0 ? uniform_cone_pdf(cos_cutoff_) : 0;
   }
 
   // The intensity integrated over the cone: 2 pi [1 - (sin c - sin b) / (c - b)]
   // for the linear fall-off from beam b to cutoff c; 2 pi (1 - cos c) for none.
+  // A texture enters by its mean over (u, v), standing for its mean over the
+  // cone (light selection needs only a positive weight, not the exact power).
   Color power() const override {
     const double c = cutoff_, b = beam_;
     const double solid =
         c - b > 1e-6 ? 2 * M_PI * (1 - (std::sin(c) - std::sin(b)) / (c - b)) : 2 * M_PI * (1 - std::cos(c));
-    return intensity_ * float(solid);
+    return (texture_ ? intensity_ * texture_->mean() : intensity_) * float(solid);
   }
   bool is_delta() const override { return true; }
 
  private:
-  // The fraction of the intensity sent along the world direction d.
-  float falloff(Vec3 d) const {
+  // The intensity sent along the world direction d.
+  Color emitted(Vec3 d) const {
     const Vec3 local = normalize(to_local_.vector(d));
+    const float f = falloff(local);
+    if (f == 0) return {};
+    if (!texture_) return intensity_ * f;
+    const float z = std::max(local.z, 1e-6f);  // a cone wider than a hemisphere reaches z = 0
+    const Vec2 uv{0.5f + local.x / z * uv_scale_, 0.5f + local.y / z * uv_scale_};
+    return intensity_ * texture_->eval(uv) * f;
+  }
+
+  // The fraction of the intensity sent along the local direction d.
+  float falloff(Vec3 local) const {
     if (local.z <= cos_cutoff_) return 0;
     if (local.z >= cos_beam_) return 1;
     return (cutoff_ - std::acos(local.z)) / (cutoff_ - beam_);
   }
 
   Color intensity_;
+  std::shared_ptr<Texture> texture_;
   Transform to_world_, to_local_;
   Vec3 position_;
-  float cutoff_ = 0, beam_ = 0, cos_cutoff_ = 1, cos_beam_ = 1;
+  float cutoff_ = 0, beam_ = 0, cos_cutoff_ = 1, cos_beam_ = 1, uv_scale_ = 0.5f;
 };
 
 }  // namespace
@@ -92,6 +110,7 @@ CAUSTICA_REGISTER_PLUGIN(
     {{"intensity", ParamType::Color, "1", "radiant intensity on the axis, W/sr per channel"},
      {"cutoff_angle", ParamType::Float, "20", "half-angle in degrees beyond which nothing is emitted"},
      {"beam_width", ParamType::Float, std::nullopt, "half-angle of full intensity (default: 3/4 of cutoff_angle)"},
+     {"texture", ParamType::Texture, std::nullopt, "an image projected through the cone, scaling the intensity"},
      {"to_world", ParamType::Transform, "", "placement: the light sits at the origin, shining along local +z"}},
     {});
 

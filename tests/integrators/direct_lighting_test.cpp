@@ -242,6 +242,25 @@ TEST(DirectLighting, SpotLightFallsOffLinearlyInAngle) {
   }
 }
 
+// A texture projected by the spot (Mitsuba's mapping): looking down with
+// image up +y, the spot's local x is world -x, so the plane point (X, Y)
+// reads (u, v) = (1/2 - X / (2 tan 40), 1/2 + Y / (2 tan 40)); the checks
+// holding (0, 0) and (1/2, 1/2) have colour0.
+TEST(DirectLighting, SpotLightProjectsItsTexture) {
+  const std::string spot =
+      "<emitter type='spot'><rgb name='intensity' value='2'/><float name='cutoff_angle' value='40'/>"
+      "<float name='beam_width' value='20'/><texture type='checkerboard' name='texture'><float name='color0' "
+      "value='0.25'/><float name='color1' value='1.5'/></texture><transform name='to_world'><lookat origin='0, 0, 1' "
+      "target='0, 0, 0' up='0, 1, 0'/></transform></emitter>";
+  const auto scene = test::scene_from_xml(plane_scene("<integrator type='direct'/>", spot));
+  for (const auto& [x, y] : {std::pair{-0.2f, -0.2f}, {0.2f, -0.2f}, {0.2f, 0.2f}, {-0.2f, 0.25f}}) {
+    const double t = std::tan(40 * M_PI / 180), u = 0.5 - x / (2 * t), v = 0.5 + y / (2 * t);
+    const double check = (u < 0.5) == (v < 0.5) ? 0.25 : 1.5;
+    const auto [mean, se] = estimate(scene, x, y, 4);
+    EXPECT_NEAR(mean, spot_radiance(x, y) * check, 1e-5) << x << " " << y;
+  }
+}
+
 TEST(DirectLighting, SpotLightSeenByLightPaths) {
   expect_regions_match(kSpot,
                        {{"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 64},

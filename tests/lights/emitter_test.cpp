@@ -23,7 +23,13 @@ const std::string kShapes[] = {
     "<shape type='sphere'><float name='radius' value='0.5'/><emitter type='area'><rgb name='radiance' value='2'/>"
     "</emitter></shape>",
     "<shape type='disk'><transform name='to_world'><scale x='0.5' y='1.5'/></transform><emitter type='area'>"
-    "<rgb name='radiance' value='2'/></emitter></shape>"};
+    "<rgb name='radiance' value='2'/></emitter></shape>",
+    // A radiance texture: a rectangle's (u, v) spread evenly over its area,
+    // so the texture's mean is the emitter's too and power() stays exact.
+    "<shape type='rectangle'><transform name='to_world'><rotate x='1' angle='-20'/></transform>"
+    "<emitter type='area'><texture type='checkerboard' name='radiance'><float name='color0' value='0.5'/>"
+    "<float name='color1' value='3'/><transform name='to_uv'><scale value='3'/></transform></texture>"
+    "</emitter></shape>"};
 
 class AreaEmitter : public testing::TestWithParam<std::string> {};
 
@@ -50,6 +56,10 @@ TEST_P(AreaEmitter, SampledDensitiesMatchTheirPdfs) {
     EXPECT_NEAR(pdf_pos, le->pdf_pos, 1e-4f * pdf_pos);
     EXPECT_NEAR(pdf_dir, le->pdf_dir, 1e-4f * pdf_dir);
     EXPECT_GT(dot(le->ray.d, le->n), 0);  // emitted to the lit side
+    // The radiance sent is what the surface shows there, seen along the ray.
+    const auto back = scene->intersect({le->ray.at(0.01f), -le->ray.d});
+    ASSERT_TRUE(back);
+    EXPECT_EQ(le->Le, light.L(*back, le->ray.d));
   }
   EXPECT_GT(checked, 50);  // the light faces the reference point
 }
