@@ -11,9 +11,11 @@ namespace caustica {
 
 CoatingAlbedo::CoatingAlbedo(MicrofacetDistribution::Type type, float alpha_lo, float alpha_hi, float eta)
     : alpha_lo_(alpha_lo), alpha_hi_(alpha_hi) {
-  const int n = alpha_hi > alpha_lo ? kAlphaNodes : 1;
   root_lo_ = std::sqrt(alpha_lo);
-  root_step_ = n > 1 ? (std::sqrt(alpha_hi) - root_lo_) / float(n - 1) : 0;
+  // A range too narrow to resolve in sqrt(alpha) is one roughness.
+  const float root_span = std::sqrt(alpha_hi) - root_lo_;
+  const int n = root_span > 1e-4f * std::sqrt(alpha_hi) ? kAlphaNodes : 1;
+  root_step_ = n > 1 ? root_span / float(n - 1) : 0;
   tables_.resize(size_t(n));
   // Each node's integral is independent and deterministic: computed in
   // parallel, the tables are the same on any number of threads.

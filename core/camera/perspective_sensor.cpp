@@ -52,6 +52,8 @@ class ProjectiveSensor : public Sensor {
         throw props.error("aperture_radius", "must be zero or more (zero is a pinhole)");
       focus_ = props.has("focus_distance") ? props.get_float("focus_distance") : far_;
       if (!(focus_ > 0) || !std::isfinite(focus_)) throw props.error("focus_distance", "must be positive");
+      // A lens too small for its area to be a float is the pinhole.
+      if (!(kPi * lens_radius_ * lens_radius_ > 0)) lens_radius_ = 0;
       lens_area_ = lens_radius_ > 0 ? kPi * lens_radius_ * lens_radius_ : 1;
     } else {
       props.get_float("focus_distance");

@@ -35,7 +35,7 @@ int InfoCommand::run() const {
   for (const auto& e : scene->emitters()) {
     area += e->is_area();
     delta += e->is_delta();
-    infinite += e->is_infinite() && !e->is_delta();  // a directional light counts as delta
+    infinite += e->is_environment();  // a directional light counts as delta
   }
   std::printf("\nemitters: %zu (area: %d, delta: %d, environment: %d)\n", scene->emitters().size(), area, delta,
               infinite);

@@ -59,7 +59,7 @@ class AreaEmitter final : public Emitter {
                     radiance_->eval(ps.uv),
                     ps.pdf,
                     pdf_dir,
-                    false};
+                    ps.uv};
   }
 
   void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const override {

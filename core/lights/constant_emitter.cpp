@@ -29,7 +29,7 @@ class ConstantEmitter final : public Emitter {
 
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
     const Vec3 d = -square_to_uniform_sphere(u_dir);
-    return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, radiance_, disk_.pdf(), uniform_sphere_pdf(), false};
+    return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, radiance_, disk_.pdf(), uniform_sphere_pdf(), {}};
   }
 
   void pdf_Le(const Ray&, Vec3, float* pdf_pos, float* pdf_dir) const override {

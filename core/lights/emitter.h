@@ -30,7 +30,7 @@ struct LeSample {
   Color Le;
   float pdf_pos = 0;  // area density (or 1 for a delta position)
   float pdf_dir = 0;  // solid angle density of the direction
-  bool delta_position = false;
+  Vec2 uv;            // surface parameters at the origin, for a textured emitter
 };
 
 class Emitter : public Plugin {
@@ -58,6 +58,9 @@ class Emitter : public Plugin {
 
   virtual bool is_delta() const { return false; }
   virtual bool is_infinite() const { return false; }
+  // An environment a ray leaving the scene can meet: infinitely far and
+  // not a delta in direction (a directional light is met by no ray).
+  bool is_environment() const { return is_infinite() && !is_delta(); }
 };
 
 }  // namespace caustica

@@ -97,7 +97,7 @@ class EnvmapEmitter final : public Emitter {
     const Vec3 d = -to_world_direction(uv);
     const float pdf_dir = pdf_direction(-d);
     if (!(pdf_dir > 0)) return std::nullopt;
-    return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, texel(uv), disk_.pdf(), pdf_dir, false};
+    return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, texel(uv), disk_.pdf(), pdf_dir, {}};
   }
 
   void pdf_Le(const Ray& ray, Vec3, float* pdf_pos, float* pdf_dir) const override {

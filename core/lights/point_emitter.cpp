@@ -32,7 +32,7 @@ class PointEmitter final : public Emitter {
 
   std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir) const override {
     const Vec3 d = square_to_uniform_sphere(u_dir);
-    return LeSample{{position_, d, kInfinity}, {}, intensity_, 1, uniform_sphere_pdf(), true};
+    return LeSample{{position_, d, kInfinity}, {}, intensity_, 1, uniform_sphere_pdf(), {}};
   }
 
   void pdf_Le(const Ray&, Vec3, float* pdf_pos, float* pdf_dir) const override {

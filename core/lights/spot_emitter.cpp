@@ -38,7 +38,9 @@ class SpotEmitter final : public Emitter {
     beam_ = beam * kPi / 180;
     cos_cutoff_ = std::cos(cutoff_);
     cos_beam_ = std::cos(beam_);
-    uv_scale_ = 0.5f / std::tan(std::min(cutoff_, 0.5f * kPi * kOneMinusEpsilon));
+    if (texture_ && !(cutoff < 90))
+      throw props.error("texture", "needs a cutoff_angle below 90 degrees (it is projected onto a plane)");
+    uv_scale_ = 0.5f / std::tan(cutoff_);
   }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
@@ -57,7 +59,7 @@ class SpotEmitter final : public Emitter {
     const Vec3 d = normalize(to_world_.vector(square_to_uniform_cone(u_dir, cos_cutoff_)));
     const Color I = emitted(d);
     if (I.is_black()) return std::nullopt;
-    return LeSample{{position_, d, kInfinity}, {}, I, 1, uniform_cone_pdf(cos_cutoff_), true};
+    return LeSample{{position_, d, kInfinity}, {}, I, 1, uniform_cone_pdf(cos_cutoff_), {}};
   }
 
   void pdf_Le(const Ray& ray, Vec3, float* pdf_pos, float* pdf_dir) const override {
@@ -84,8 +86,7 @@ class SpotEmitter final : public Emitter {
     const float f = falloff(local);
     if (f == 0) return {};
     if (!texture_) return intensity_ * f;
-    const float z = std::max(local.z, 1e-6f);  // a cone wider than a hemisphere reaches z = 0
-    const Vec2 uv{0.5f + local.x / z * uv_scale_, 0.5f + local.y / z * uv_scale_};
+    const Vec2 uv{0.5f + local.x / local.z * uv_scale_, 0.5f + local.y / local.z * uv_scale_};
     return intensity_ * texture_->eval(uv) * f;
   }
 

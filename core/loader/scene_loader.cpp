@@ -68,13 +68,21 @@ class Instantiator {
       ~Leave() { --depth; }
     } leave{depth_};
     if (const std::string* id = node.attribute("id")) {
-      if (auto it = built_.find(*id); it != built_.end()) return it->second;
+      if (auto it = built_.find(*id); it != built_.end()) {
+        // A group's shapes live in the group's space, the others in render space.
+        if (placed_in_space(node) && shapes_in_group_.at(*id) != (in_group_ > 0))
+          throw SceneError(node.where, "shape '" + *id +
+                                           "' is used both inside a shapegroup and outside one; give each use its "
+                                           "own shape");
+        return it->second;
+      }
       if (!building_.insert(*id).second) throw SceneError(node.where, "'" + *id + "' refers to itself");
     }
     ObjectValue obj = create(node);
     if (const std::string* id = node.attribute("id")) {
       building_.erase(*id);
       built_[*id] = obj;
+      if (placed_in_space(node)) shapes_in_group_[*id] = in_group_ > 0;
     }
     return obj;
   }
@@ -132,9 +140,8 @@ class Instantiator {
     } catch (const std::exception& e) {
       throw SceneError(node.where, node.tag + " '" + type + "': " + e.what());
     }
-    for (const auto& [name, value] : props.values())
-      if (const IgnoredParam* ignored = find_ignored_param(node.tag, name))
-        props.warn(name, "is ignored: " + ignored->why);
+    for (const std::string& name : info->ignored)
+      if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
     if (node.tag == "emitter") {
       emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
@@ -167,6 +174,13 @@ class Instantiator {
     }
   }
 
+  // A shape with a place of its own (not a group, nor an instance, which a
+  // group refuses anyway): in a group's space or in the scene's.
+  static bool placed_in_space(const XmlNode& node) {
+    const std::string* type = node.attribute("type");
+    return node.tag == "shape" && type && *type != "shapegroup" && *type != "instance";
+  }
+
   void finish_shape(const std::shared_ptr<Shape>& shape, const Properties& props, const XmlNode& node) {
     auto bsdf = props.child<Bsdf>("bsdf");
     if (!bsdf) {
@@ -189,7 +203,8 @@ class Instantiator {
   Vec3d render_origin_;
   FileResolver resolver_;
   int depth_ = 0;
-  int in_group_ = 0;  // shapegroups being built around the current object
+  int in_group_ = 0;                             // shapegroups being built around the current object
+  std::map<std::string, bool> shapes_in_group_;  // for each shape built with an id, whether inside a group
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
   std::set<std::string> building_;

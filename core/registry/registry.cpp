@@ -51,7 +51,10 @@ Registry& Registry::instance() {
 
 bool Registry::add(PluginInfo info) {
   for (const IgnoredParam& ignored : ignored_params())
-    if (ignored.category == info.category && !info.param(ignored.spec.name)) info.params.push_back(ignored.spec);
+    if (ignored.category == info.category && !info.param(ignored.spec.name)) {
+      info.params.push_back(ignored.spec);
+      info.ignored.push_back(ignored.spec.name);
+    }
   auto key = std::make_pair(info.category, info.name);
   if (plugins_.count(key)) throw std::logic_error("plugin registered twice: " + info.category + " " + info.name);
   plugins_.emplace(std::move(key), std::move(info));

@@ -22,6 +22,9 @@ struct PluginInfo {
   std::vector<ParamSpec> params;
   std::vector<std::string> child_categories;
   std::function<std::shared_ptr<Plugin>(const Properties&)> create;
+  // The category's ignored parameters (ignored_params.h) the registry added
+  // because the plugin does not declare them itself.
+  std::vector<std::string> ignored;
 
   const ParamSpec* param(const std::string& param_name) const;
 };
@@ -54,10 +57,14 @@ std::string join_names(const std::vector<std::string>& names);
 // The plugin made records its effective parameters (Plugin::parameters()).
 #define CAUSTICA_REGISTER_PLUGIN(Class, category, name, ...)                                             \
   [[maybe_unused]] static const bool caustica_registered_##Class = ::caustica::Registry::instance().add( \
-      ::caustica::PluginInfo{category, name, __VA_ARGS__, [](const ::caustica::Properties& props) {      \
+      ::caustica::PluginInfo{category,                                                                   \
+                             name,                                                                       \
+                             __VA_ARGS__,                                                                \
+                             [](const ::caustica::Properties& props) {                                   \
                                auto plugin = std::make_shared<Class>(props);                             \
                                plugin->set_parameters(name, props.effective_parameters());               \
                                return std::shared_ptr<::caustica::Plugin>(std::move(plugin));            \
-                             }})
+                             },                                                                          \
+                             {}})
 
 }  // namespace caustica

@@ -11,7 +11,7 @@ Scene::Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared
   for (const auto& s : shapes_) bounds_.expand(s->bounds());
   for (const auto& e : emitters_) {
     e->prepare(bounds_);
-    if (e->is_infinite() && !e->is_delta()) infinite_.push_back(e.get());
+    if (e->is_environment()) infinite_.push_back(e.get());
   }
   accel_ = std::make_unique<EmbreeScene>(shapes_);
   lights_ = std::make_unique<LightSelection>(emitters_);

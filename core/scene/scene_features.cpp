@@ -64,7 +64,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
     f.area_lights += e->is_area();
     f.point_lights += e->is_delta() && !e->is_infinite();
     f.directional_lights += e->is_delta() && e->is_infinite();
-    f.environment_lights += e->is_infinite() && !e->is_delta();
+    f.environment_lights += e->is_environment();
   }
   bool receiver = false;
   int specular_shapes = 0;

@@ -3,6 +3,7 @@
 // the hit is then described there by the shape that was hit and moved back.
 // See shape_group.h for an example.
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,6 +29,17 @@ class InstanceShape final : public Shape {
     det_ = std::abs(m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
                     m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
                     m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]));
+    // Embree moves rays into the group's space with float copies of M and
+    // of its inverse: a point's place relative to the surface is then off by
+    // up to about gamma(6) |M| |M^-1| (|p| + |t|) in world units.
+    const Matrix4& inv = to_world_.inverse_matrix();
+    double norm = 0, inv_norm = 0;
+    for (int i = 0; i < 3; ++i) {
+      norm = std::max(norm, std::abs(m.m[i][0]) + std::abs(m.m[i][1]) + std::abs(m.m[i][2]));
+      inv_norm = std::max(inv_norm, std::abs(inv.m[i][0]) + std::abs(inv.m[i][1]) + std::abs(inv.m[i][2]));
+      translation_ = std::max(translation_, std::abs(m.m[i][3]));
+    }
+    embree_rounding_ = gamma(6) * norm * inv_norm;
   }
 
   bool is_instance() const override { return true; }
@@ -98,12 +110,16 @@ class InstanceShape final : public Shape {
 
  private:
   // A bound on the error of to_world_.point(p) when p itself is off by up
-  // to `error`: the error carried through |M|, plus the transform's rounding.
+  // to `error`: the error carried through |M|, the transform's rounding, and
+  // Embree's float transforms (see the constructor).
   Vec3 transformed_error(Vec3 p, Vec3 error) const {
     Vec3 e = to_world_.point_error(p);
+    const Vec3 world = to_world_.point(p);
+    const float embree = float(embree_rounding_ * (max_component(abs(world)) + translation_));
     for (int i = 0; i < 3; ++i)
       e[i] += float(abs_linear_[i][0] * error.x + abs_linear_[i][1] * error.y + abs_linear_[i][2] * error.z) *
-              (1 + gamma(3));
+                  (1 + gamma(3)) +
+              embree;
     return e;
   }
 
@@ -111,6 +127,7 @@ class InstanceShape final : public Shape {
   std::shared_ptr<ShapeGroup> group_;
   double abs_linear_[3][3] = {};
   double det_ = 1;
+  double embree_rounding_ = 0, translation_ = 0;
 };
 
 }  // namespace

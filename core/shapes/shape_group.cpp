@@ -26,6 +26,8 @@ ShapeGroup::~ShapeGroup() {
   for (const auto& [device, scene] : built_) rtcReleaseScene(scene);
 }
 
+// Called while an EmbreeScene is built, on one thread, before any ray is
+// traced; a device's scene, once built, is only read.
 RTCScene ShapeGroup::rtc_scene(RTCDevice device) const {
   for (const auto& [d, scene] : built_)
     if (d == device) return scene;

@@ -79,6 +79,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   } else {
     light.si.p = start->le.ray.o;
     light.si.ng = start->le.n;
+    light.si.uv = start->le.uv;  // where a textured emitter is read when joined to the camera
     if (light.has_normal()) light.si.shading = Frame::from_normal(start->le.n);
     light.beta = Color(1 / (start->pmf * start->le.pdf_pos));
   }

@@ -95,6 +95,10 @@ TEST(ThinLensSensor, ZeroApertureIsThePinhole) {
       sensor_xml("thinlens", "<float name='aperture_radius' value='0'/><float name='focus_distance' value='2'/>"));
   const auto pinhole = test::scene_from_xml(sensor_xml("perspective", ""));
   EXPECT_FALSE(lens->sensor().has_lens());
+  // So is a lens whose area underflows float.
+  const auto tiny = test::scene_from_xml(
+      sensor_xml("thinlens", "<float name='aperture_radius' value='1e-30'/><float name='focus_distance' value='2'/>"));
+  EXPECT_FALSE(tiny->sensor().has_lens());
   const Ray a = lens->sensor().generate_ray({10, 20}, {0.9f, 0.1f}), b = pinhole->sensor().generate_ray({10, 20}, {});
   EXPECT_EQ(a.o, b.o);
   EXPECT_EQ(a.d, b.d);

@@ -41,6 +41,9 @@ TEST(CoatingAlbedo, RangeInterpolatesSingleTables) {
     }
     EXPECT_NEAR(range.mean(alpha), single.mean(alpha), end ? 0 : 2e-3);
   }
+  // A range too narrow to resolve is one roughness, not a division by zero.
+  const CoatingAlbedo narrow(type, 0.3f, std::nextafter(0.3f, 1.0f), kEta);
+  EXPECT_EQ(narrow(0.3f, 0.5f), CoatingAlbedo(type, 0.3f, 0.3f, kEta)(0.3f, 0.5f));
   // Outside the range, the nearest end.
   EXPECT_EQ(range(0.9f, 0.5f), range(0.6f, 0.5f));
   EXPECT_EQ(range(0.0f, 0.5f), range(0.05f, 0.5f));

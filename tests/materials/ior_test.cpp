@@ -9,7 +9,7 @@ namespace caustica {
 namespace {
 
 // A stand-in plugin declaration, to read IOR parameters as a material would.
-const PluginInfo kInfo{"bsdf", "ior_reader", {{"int_ior", ParamType::Ior, "bk7", ""}}, {}, nullptr};
+const PluginInfo kInfo{"bsdf", "ior_reader", {{"int_ior", ParamType::Ior, "bk7", ""}}, {}, nullptr, {}};
 
 float read(const PropertyValue& v) {
   Properties props(kInfo, {"test.xml", 1});

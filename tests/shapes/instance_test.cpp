@@ -226,6 +226,10 @@ TEST(Instance, BadNestingIsRefusedByName) {
                                "<shape type='instance'><ref id='g'/><emitter type='area'><rgb name='radiance' "
                                "value='1'/></emitter></shape></scene>"),
               HasSubstr("shape 'instance' does not take a nested <emitter>"));
+  // A shape drawn both in a group's space and in the scene's.
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='sphere' id='s'/><shape type='shapegroup' "
+                               "id='g'><ref id='s'/></shape></scene>"),
+              HasSubstr("shape 's' is used both inside a shapegroup and outside one"));
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>" + group +
                                "<shape type='shapegroup' id='h'><shape type='instance'><ref id='g'/></shape></shape>"
                                "</scene>"),
