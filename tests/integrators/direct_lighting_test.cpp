@@ -338,6 +338,47 @@ TEST(DirectLighting, TexturedEmitterSeenByLightPaths) {
   }
 }
 
+// Three lights of different power and size over the plane: two sphere
+// lights (the point-source formula above holds for each, the whole sphere
+// being above the horizon) and a point light. Their contributions add, and
+// light selection by power must weigh each consistently wherever it enters
+// an estimator (next-event estimation, MIS for BSDF-sampled hits, light
+// paths, photons). max_depth 2 keeps light the spheres reflect out of it;
+// in view no light shadows another.
+const char* kThreeLights =
+    "<shape type='sphere'><point name='center' x='0.5' y='0' z='1.2'/><float name='radius' value='0.15'/>"
+    "<emitter type='area'><rgb name='radiance' value='4'/></emitter></shape>"
+    "<shape type='sphere'><point name='center' x='-0.4' y='0.3' z='0.8'/><float name='radius' value='0.3'/>"
+    "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape>"
+    "<emitter type='point'><point name='position' x='0.2' y='-0.5' z='1.5'/><rgb name='intensity' value='1.5'/>"
+    "</emitter>";
+
+double three_lights_radiance(double x, double y) {
+  const auto sphere = [&](double cx, double cy, double h, double r, double Le) {
+    const double d = std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy) + h * h);
+    return kRho * Le * r * r * h / (d * d * d);
+  };
+  const double dx = x - 0.2, dy = y + 0.5, d = std::sqrt(dx * dx + dy * dy + 1.5 * 1.5);
+  return sphere(0.5, 0, 1.2, 0.15, 4) + sphere(-0.4, 0.3, 0.8, 0.3, 1) + kRho * 1.5 * 1.5 / (M_PI * d * d * d);
+}
+
+TEST(DirectLighting, SeveralLightsOfDifferentPower) {
+  expect_regions_match(
+      kThreeLights,
+      {{"<integrator type='direct'/>", 16},
+       {"<integrator type='path'><integer name='max_depth' value='2'/></integrator>", 16},
+       {"<integrator type='ptracer'><integer name='max_depth' value='2'/></integrator>", 256},
+       {"<integrator type='bdpt'><integer name='max_depth' value='2'/></integrator>", 16},
+       {"<integrator type='bdpt'><integer name='max_depth' value='2'/><string name='mis' value='balance'/>"
+        "</integrator>",
+        16},
+       {"<integrator type='photon'><integer name='max_depth' value='2'/></integrator>", 16},
+       {"<integrator type='sppm'><integer name='max_depth' value='2'/><integer name='photons' value='20000'/>"
+        "</integrator>",
+        32}},
+      three_lights_radiance, 500);
+}
+
 TEST(DirectLighting, EmittersSeenDirectlyAndHidden) {
   const auto shown = test::scene_from_xml(plane_scene("<integrator type='direct'/>", sphere_light()));
   const auto hidden = test::scene_from_xml(plane_scene(
