@@ -88,6 +88,39 @@ TEST_P(Microfacet, SamplesAreValidNormals) {
 
 INSTANTIATE_TEST_SUITE_P(Distributions, Microfacet, testing::ValuesIn(kCases));
 
+// Smith's Lambda in closed form, written out here for isotropic roughness
+// (tan theta = t): GGX (-1 + sqrt(1 + alpha^2 t^2)) / 2; Beckmann with
+// a = 1 / (alpha t), (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)). G1 is
+// 1 / (1 + Lambda) for a facet facing w, and the height-correlated G of a
+// pair is 1 / (1 + Lambda(wo) + Lambda(wi)), never the product of the
+// G1s and never G1 squared; a facet turned away from either direction
+// masks it completely.
+TEST(Microfacet, SmithMaskingMatchesItsClosedForms) {
+  const auto lambda = [](Type type, double alpha, Vec3 w) {
+    const double t = std::sqrt(std::max(0.0, 1 - double(w.z) * w.z)) / w.z;
+    if (type == Type::GGX) return (-1 + std::sqrt(1 + alpha * alpha * t * t)) / 2;
+    if (t == 0) return 0.0;
+    const double a = 1 / (alpha * t);
+    return (std::erf(a) - 1) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(M_PI));
+  };
+  for (const Type type : {Type::GGX, Type::Beckmann})
+    for (const float alpha : {0.05f, 0.3f, 0.9f}) {
+      const MicrofacetDistribution d(type, alpha, alpha);
+      for (const float to : {0.0f, 0.6f, 1.2f, 1.5f})
+        for (const float ti : {0.3f, 1.0f, 1.45f}) {
+          const Vec3 wo = test::direction(to, 0.4f), wi = test::direction(ti, 2.9f), m = normalize(wo + wi);
+          const double lo = lambda(type, alpha, wo), li = lambda(type, alpha, wi);
+          EXPECT_NEAR(d.lambda(wo), lo, 1e-4 * (1 + lo)) << alpha << " " << to;
+          EXPECT_NEAR(d.G1(wo, m), 1 / (1 + lo), 1e-5) << alpha << " " << to;
+          EXPECT_NEAR(d.G(wo, wi, m), 1 / (1 + lo + li), 1e-5) << alpha << " " << to << " " << ti;
+          const Vec3 away = test::direction(1.2f, 0.4f + float(M_PI));  // a facet tilted away from wo
+          if (dot(wo, away) < 0) {
+            EXPECT_EQ(d.G1(wo, away), 0);
+          }
+        }
+    }
+}
+
 TEST(Microfacet, ParsesItsNames) {
   EXPECT_EQ(MicrofacetDistribution::parse_type("ggx"), Type::GGX);
   EXPECT_EQ(MicrofacetDistribution::parse_type("beckmann"), Type::Beckmann);
