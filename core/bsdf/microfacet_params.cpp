@@ -52,7 +52,8 @@ MicrofacetRoughness::MicrofacetRoughness(const Properties& props) : type_(distri
     return std::pair{texture, range};
   };
   const auto [u, u_range] = roughness("alpha_u");
-  const auto [v, v_range] = roughness("alpha_v");
+  // Without alpha_u / alpha_v both directions share alpha's one texture.
+  const auto [v, v_range] = props.has("alpha_v") ? roughness("alpha_v") : std::pair{u, u_range};
   alpha_u_ = u;
   alpha_v_ = v;
   lowest_ = std::min(u_range.lowest, v_range.lowest);

@@ -30,7 +30,9 @@ class MicrofacetRoughness {
   // checks them, a texture's whole range included.
   explicit MicrofacetRoughness(const Properties& props);
   MicrofacetDistribution at(Vec2 uv) const {
-    return {type_, alpha_u_->eval(uv).luminance(), alpha_v_->eval(uv).luminance()};
+    const float u = alpha_u_->eval(uv).luminance();
+    // An isotropic roughness (alpha, or the same texture twice) is read once.
+    return {type_, u, alpha_v_ == alpha_u_ ? u : alpha_v_->eval(uv).luminance()};
   }
   MicrofacetDistribution::Type type() const { return type_; }
   // Bounds on every roughness the textures give.

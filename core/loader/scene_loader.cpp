@@ -70,7 +70,7 @@ class Instantiator {
     if (const std::string* id = node.attribute("id")) {
       if (auto it = built_.find(*id); it != built_.end()) {
         // A group's shapes live in the group's space, the others in render space.
-        if (placed_in_space(node) && shapes_in_group_.at(*id) != (in_group_ > 0))
+        if (placed_in_space(it->second) && shapes_in_group_.at(*id) != (in_group_ > 0))
           throw SceneError(node.where, "shape '" + *id +
                                            "' is used both inside a shapegroup and outside one; give each use its "
                                            "own shape");
@@ -82,7 +82,7 @@ class Instantiator {
     if (const std::string* id = node.attribute("id")) {
       building_.erase(*id);
       built_[*id] = obj;
-      if (placed_in_space(node)) shapes_in_group_[*id] = in_group_ > 0;
+      if (placed_in_space(obj)) shapes_in_group_[*id] = in_group_ > 0;
     }
     return obj;
   }
@@ -176,9 +176,10 @@ class Instantiator {
 
   // A shape with a place of its own (not a group, nor an instance, which a
   // group refuses anyway): in a group's space or in the scene's.
-  static bool placed_in_space(const XmlNode& node) {
-    const std::string* type = node.attribute("type");
-    return node.tag == "shape" && type && *type != "shapegroup" && *type != "instance";
+  static bool placed_in_space(const ObjectValue& obj) {
+    if (obj.category != "shape") return false;
+    const auto& shape = static_cast<const Shape&>(*obj.object);
+    return !shape.is_group() && !shape.is_instance();
   }
 
   void finish_shape(const std::shared_ptr<Shape>& shape, const Properties& props, const XmlNode& node) {

@@ -65,7 +65,7 @@ class InstanceShape final : public Shape {
     SurfaceInteraction si = group_->shape(hit.geom).interaction(local, hit);
     const Vec3 p_local = si.p;
     si.p = to_world_.point(p_local);
-    si.p_error = transformed_error(p_local, si.p_error);
+    si.p_error = transformed_error(p_local, si.p, si.p_error);
     si.ng = normalize(to_world_.normal(si.ng));
     si.dpdu = to_world_.vector(si.dpdu);
     si.dpdv = to_world_.vector(si.dpdv);
@@ -99,7 +99,7 @@ class InstanceShape final : public Shape {
     const float scale = float(det_) * length(n);
     const Vec3 p_local = ps.p;
     ps.p = to_world_.point(p_local);
-    ps.p_error = transformed_error(p_local, ps.p_error);
+    ps.p_error = transformed_error(p_local, ps.p, ps.p_error);
     ps.n = normalize(n);
     ps.pdf = scale > 0 ? ps.pdf / scale : 0;
     return ps;
@@ -109,12 +109,11 @@ class InstanceShape final : public Shape {
   std::string kind() const override { return "instance"; }
 
  private:
-  // A bound on the error of to_world_.point(p) when p itself is off by up
+  // A bound on the error of world = to_world_.point(p) when p itself is off by up
   // to `error`: the error carried through |M|, the transform's rounding, and
   // Embree's float transforms (see the constructor).
-  Vec3 transformed_error(Vec3 p, Vec3 error) const {
+  Vec3 transformed_error(Vec3 p, Vec3 world, Vec3 error) const {
     Vec3 e = to_world_.point_error(p);
-    const Vec3 world = to_world_.point(p);
     const float embree = float(embree_rounding_ * (max_component(abs(world)) + translation_));
     for (int i = 0; i < 3; ++i)
       e[i] += float(abs_linear_[i][0] * error.x + abs_linear_[i][1] * error.y + abs_linear_[i][2] * error.z) *

@@ -112,6 +112,13 @@ double sphere_light_radiance(double x, double y) {
   return kRho * kLe * kRadius * kRadius * kHeight / (d * d * d);
 }
 
+// 24x24 pixels looking straight down at the plane from 0.6 above it.
+const char* kTopCamera =
+    "<sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
+    "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform>"
+    "<film type='hdrfilm'><integer name='width' value='24'/><integer name='height' value='24'/>"
+    "<rfilter type='box'/></film></sensor>";
+
 // The plane under `light`, seen from above by 24x24 pixels, rendered by each
 // integrator (XML, samples per pixel): region means of independent runs
 // against `radiance` averaged over the region's pixels, at 0.1% Sidak-
@@ -119,17 +126,12 @@ double sphere_light_radiance(double x, double y) {
 void expect_regions_match(const std::string& light, const std::vector<std::pair<const char*, uint32_t>>& integrators,
                           const std::function<double(double, double)>& radiance, uint64_t seed,
                           int plane_half_width = 10) {
-  const std::string camera =
-      "<sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
-      "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform>"
-      "<film type='hdrfilm'><integer name='width' value='24'/><integer name='height' value='24'/>"
-      "<rfilter type='box'/></film></sensor>";
   const auto regions = test::grid_regions(24, 24, 4);
   constexpr int kRuns = 10;
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.001, int(integrators.size() * regions.size())), kRuns - 1);
   for (const auto& [integrator, spp] : integrators) {
-    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + camera, light, plane_half_width));
+    const auto scene = test::scene_from_xml(plane_scene(std::string(integrator) + kTopCamera, light, plane_half_width));
     const auto estimates = test::estimate_regions(scene, regions, spp, kRuns, seed += kRuns);
     for (size_t i = 0; i < regions.size(); ++i) {
       double expected = 0;
@@ -315,9 +317,7 @@ TEST(DirectLighting, DirectionalLightSeenByLightPaths) {
 // region by region over independent runs at 0.1 %, Sidak-corrected.
 TEST(DirectLighting, TexturedEmitterSeenByLightPaths) {
   const std::string scene_start =
-      "<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='90'/><transform name='to_world'>"
-      "<lookat origin='0.1, -0.2, 0.6' target='0.1, -0.2, 0' up='0, 1, 0'/></transform><film type='hdrfilm'>"
-      "<integer name='width' value='24'/><integer name='height' value='24'/><rfilter type='box'/></film></sensor>"
+      std::string("<scene version='3.0.0'>") + kTopCamera +
       "<shape type='rectangle'><transform name='to_world'><scale value='3'/></transform><emitter type='area'>"
       "<texture type='checkerboard' name='radiance'><float name='color0' value='0.2'/><float name='color1' "
       "value='3'/><transform name='to_uv'><scale value='4'/></transform></texture></emitter></shape>";
