@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "tests/support/bsdf_checks.h"
+#include "tests/support/microfacet_oracle.h"
 
 namespace caustica {
 namespace {
@@ -88,20 +89,14 @@ TEST_P(Microfacet, SamplesAreValidNormals) {
 
 INSTANTIATE_TEST_SUITE_P(Distributions, Microfacet, testing::ValuesIn(kCases));
 
-// Smith's Lambda in closed form, written out here for isotropic roughness
-// (tan theta = t): GGX (-1 + sqrt(1 + alpha^2 t^2)) / 2; Beckmann with
-// a = 1 / (alpha t), (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)). G1 is
+// Smith's Lambda in closed form (tests/support/microfacet_oracle). G1 is
 // 1 / (1 + Lambda) for a facet facing w, and the height-correlated G of a
 // pair is 1 / (1 + Lambda(wo) + Lambda(wi)), never the product of the
 // G1s and never G1 squared; a facet turned away from either direction
 // masks it completely.
 TEST(Microfacet, SmithMaskingMatchesItsClosedForms) {
   const auto lambda = [](Type type, double alpha, Vec3 w) {
-    const double t = std::sqrt(std::max(0.0, 1 - double(w.z) * w.z)) / w.z;
-    if (type == Type::GGX) return (-1 + std::sqrt(1 + alpha * alpha * t * t)) / 2;
-    if (t == 0) return 0.0;
-    const double a = 1 / (alpha * t);
-    return (std::erf(a) - 1) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(M_PI));
+    return test::smith_lambda({type == Type::GGX, alpha, alpha}, w);
   };
   for (const Type type : {Type::GGX, Type::Beckmann})
     for (const float alpha : {0.05f, 0.3f, 0.9f}) {

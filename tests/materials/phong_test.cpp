@@ -85,6 +85,31 @@ TEST(PhongBsdf, ValueMatchesTheFormula) {
   EXPECT_FALSE(bsdf->sample({}, Vec3(0, 0, -1), 0.5f, {0.5f, 0.5f}));
 }
 
+// Normalisation: seen from the normal, the glossy lobe ks (n + 2) / (2 pi)
+// cos^n reflects exactly ks and the diffuse part exactly kd, at every
+// exponent. The reflected energy is integrated from eval() alone, by the
+// midpoint rule over the polar angle at several azimuths, independently
+// of the sampling routine and of albedo().
+TEST(PhongBsdf, LobesAreNormalisedAtEveryExponent) {
+  const auto reflected = [](const Bsdf& bsdf) {
+    constexpr int kSteps = 100000;
+    const double h = (kPi / 2) / kSteps;
+    double sum = 0;
+    for (float phi : {0.0f, 1.3f, 4.0f})
+      for (int i = 0; i < kSteps; ++i) {
+        const double theta = (i + 0.5) * h;
+        const Vec3 wi = direction(float(theta), phi);
+        sum += bsdf.eval({}, Vec3(0, 0, 1), wi).g * std::cos(theta) * std::sin(theta) * h * 2 * kPi;
+      }
+    return sum / 3;
+  };
+  for (float exponent : {0.0f, 1.0f, 2.0f, 10.0f, 30.0f, 200.0f, 1000.0f}) {
+    EXPECT_NEAR(reflected(*phong("0", "1", exponent)), 1.0, 1e-3) << "glossy, n " << exponent;
+    EXPECT_NEAR(reflected(*phong("0.3", "0.5", exponent)), 0.8, 1e-3) << "both, n " << exponent;
+  }
+  EXPECT_NEAR(reflected(*phong("1", "0", 30)), 1.0, 1e-3) << "diffuse";
+}
+
 TEST(PhongBsdf, HardCasesStayFinite) {
   // Huge exponents, grazing directions and extreme random numbers.
   for (float exponent : {0.0f, 1e4f, 1e6f}) {
