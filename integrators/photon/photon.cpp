@@ -16,6 +16,7 @@
 //   <integrator type="photon"><integer name="photons" value="200000"/></integrator>
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -63,7 +64,10 @@ class CausticRounds final : public PixelEstimator {
   bool begin_pass(uint32_t pass, const std::atomic<bool>* stop) override;
   void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override {
-    return enabled_ ? "rounds=" + std::to_string(rounds_) : "(photon pass skipped)";
+    if (!enabled_) return "(photon pass skipped)";
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%.6g", map_.radius());
+    return "rounds=" + std::to_string(rounds_) + ", radius=" + radius;
   }
 
  private:
@@ -103,13 +107,6 @@ class PhotonIntegrator final : public PixelIntegrator {
  private:
   friend class CausticRounds;
 
-  // r_i^2 = r_0^2 prod_{k=1}^{i} (k + alpha) / (k + 1)  (Knaus and Zwicker 2011, eq. 20)
-  float round_radius(float initial_radius, uint32_t round) const {
-    double r2 = double(initial_radius) * initial_radius;
-    for (uint32_t k = 1; k <= round; ++k) r2 *= (k + photon_.alpha) / (k + 1.0);
-    return float(std::sqrt(r2));
-  }
-
   PathSettings settings_;
   PhotonSettings photon_;
   int64_t samples_per_round_;
@@ -131,7 +128,7 @@ bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
   if (!traced) return false;
   round_ = pass;
   ++rounds_;
-  map_ = PhotonMap(std::move(*traced), settings_.round_radius(initial_radius_, pass));
+  map_ = PhotonMap(std::move(*traced), round_radius(settings_.photon_, initial_radius_, pass));
   gather_.emplace(map_, photons, settings_.settings_.max_depth);
   return true;
 }

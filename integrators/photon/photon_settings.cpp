@@ -1,6 +1,7 @@
 #include "integrators/photon/photon_settings.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/registry/properties.h"
 #include "core/scene/scene.h"
@@ -18,6 +19,12 @@ PhotonSettings read_photon_settings(const Properties& props) {
 float initial_radius(const Scene& scene, const PhotonSettings& settings) {
   const Vec3 diagonal = scene.bounds().hi - scene.bounds().lo;
   return settings.radius > 0 ? settings.radius : std::max(length(diagonal) / 200, 1e-6f);
+}
+
+float round_radius(const PhotonSettings& settings, float initial_radius, uint32_t round) {
+  double r2 = double(initial_radius) * initial_radius;
+  for (uint32_t k = 1; k <= round; ++k) r2 *= (k + settings.alpha) / (k + 1.0);
+  return float(std::sqrt(r2));
 }
 
 }  // namespace caustica

@@ -20,4 +20,9 @@ PhotonSettings read_photon_settings(const Properties& props);
 // bounding-box diagonal.
 float initial_radius(const Scene& scene, const PhotonSettings& settings);
 
+// The gather radius of round i (from 0), shrinking so that the rounds'
+// average converges (Knaus and Zwicker 2011, eq. 20):
+//   r_i^2 = r_0^2 prod_{k=1}^{i} (k + alpha) / (k + 1).
+float round_radius(const PhotonSettings& settings, float initial_radius, uint32_t round);
+
 }  // namespace caustica

@@ -106,6 +106,25 @@ TEST(Photon, ErrorFallsWithRoundsAndBiasWithRadius) {
   EXPECT_GT(caustic_error(wide, 32, reference, 4), 2 * caustic_error(narrow, 32, reference, 4));
 }
 
+// The radius trace: after N rounds the last round's radius is
+// r_0^2 prod_{k=1}^{N-1} (k + alpha) / (k + 1) = r_0^2 Gamma(N + alpha) /
+// (Gamma(1 + alpha) N!), evaluated here by lgamma, as the render reports it.
+// A schedule that grows, stalls or skips a round cannot match it.
+TEST(Photon, RadiusShrinksOnItsSchedule) {
+  for (const float alpha : {0.3f, 0.7f})
+    for (const uint32_t rounds : {1u, 2u, 5u, 40u}) {
+      const auto scene = glass_box("photon:photons=200,radius=0.1,alpha=" + std::to_string(alpha));
+      RenderStats stats;
+      test::render_scene(scene, rounds, 3, 0, &stats);
+      const double expected =
+          0.1 * std::exp(0.5 * (std::lgamma(rounds + alpha) - std::lgamma(1 + alpha) - std::lgamma(rounds + 1.0)));
+      const std::string prefix = "rounds=" + std::to_string(rounds) + ", radius=";
+      ASSERT_THAT(stats.summary, testing::StartsWith(prefix));
+      EXPECT_NEAR(std::stod(stats.summary.substr(prefix.size())), expected, 1e-5 * expected)
+          << "alpha " << alpha << ", " << rounds << " rounds";
+    }
+}
+
 // Hard cases: a light just above the floor sends photons through the glass
 // onto it at grazing angles, and a radius shrunk to almost nothing finds
 // almost no photons; both stay finite.
