@@ -98,23 +98,28 @@ def restore(mutant):
         shutil.copy(ROOT / f, TREE / f)
 
 
+def run_tests_spec(spec, timeout):
+    """Runs one executable[:filter]; returns whether it failed and what failed."""
+    exe, _, gtest_filter = spec.partition(":")
+    cmd = [str(BUILD / "tests" / exe)]
+    if gtest_filter:
+        cmd.append("--gtest_filter=" + gtest_filter)
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=TREE)
+    except subprocess.TimeoutExpired:
+        return True, [f"{exe} (timed out)"]
+    if r.returncode == 0:
+        return False, []
+    names = re.findall(r"^\[  FAILED  \] ([\w/.]+)(?:,|$| \()", r.stdout, re.M)
+    return True, sorted(set(names)) or [f"{exe} (exit {r.returncode})"]
+
+
 def run_tests(mutant, timeout):
     failed, caught = [], False
     for spec in mutant.tests:
-        exe, _, gtest_filter = spec.partition(":")
-        cmd = [str(BUILD / "tests" / exe)]
-        if gtest_filter:
-            cmd.append("--gtest_filter=" + gtest_filter)
-        try:
-            r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=TREE)
-        except subprocess.TimeoutExpired:
-            failed.append(f"{exe} (timed out)")
-            caught = True
-            continue
-        if r.returncode != 0:
-            caught = True
-            names = re.findall(r"^\[  FAILED  \] ([\w/.]+)(?:,|$| \()", r.stdout, re.M)
-            failed += sorted(set(names)) or [f"{exe} (exit {r.returncode})"]
+        failing, names = run_tests_spec(spec, timeout)
+        caught |= failing
+        failed += names
     return caught, failed
 
 
@@ -187,13 +192,12 @@ def main():
     ok, log = build(targets, args.jobs)
     if not ok:
         sys.exit("the unmutated tree does not build:\n" + log[-3000:])
-    baseline_failures = {}
-    for m in runnable:
-        caught, failed = run_tests(m, args.timeout)
-        if caught:
-            baseline_failures[m.name] = failed
-    if baseline_failures:
-        sys.exit("tests fail without any mutant: " + str(baseline_failures))
+    specs = sorted({t for m in runnable for t in m.tests})
+    print(f"running the {len(specs)} named test selections without any mutant", flush=True)
+    for spec in specs:
+        failing, failed = run_tests_spec(spec, args.timeout)
+        if failing:
+            sys.exit(f"{spec} fails without any mutant: {', '.join(failed)}")
 
     results = []
     for m in runnable:
