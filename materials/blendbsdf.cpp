@@ -33,21 +33,9 @@ class BlendBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return first_->lobes() | second_->lobes(); }
 
-  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const float w = weight(ctx);
-    Color f;
-    if (w < 1) f += first_->eval(ctx, wo, wi) * (1 - w);
-    if (w > 0) f += second_->eval(ctx, wo, wi) * w;
-    return f;
-  }
+  Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override { return eval_with(weight(ctx), ctx, wo, wi); }
 
-  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const float w = weight(ctx);
-    float p = 0;
-    if (w < 1) p += first_->pdf(ctx, wo, wi) * (1 - w);
-    if (w > 0) p += second_->pdf(ctx, wo, wi) * w;
-    return p;
-  }
+  float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override { return pdf_with(weight(ctx), ctx, wo, wi); }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
     const float w = weight(ctx);
@@ -63,8 +51,8 @@ class BlendBsdf final : public Bsdf {
       s->pdf *= chance;
       return s;
     }
-    s->f = eval(ctx, wo, s->wi);
-    s->pdf = pdf(ctx, wo, s->wi);
+    s->f = eval_with(w, ctx, wo, s->wi);
+    s->pdf = pdf_with(w, ctx, wo, s->wi);
     if (!(s->pdf > 0)) return std::nullopt;
     return s;
   }
@@ -75,9 +63,21 @@ class BlendBsdf final : public Bsdf {
   }
 
  private:
-  float weight(const BsdfContext& ctx) const {
-    const float w = weight_->eval(ctx.uv).luminance();
-    return std::isfinite(w) ? std::clamp(w, 0.0f, 1.0f) : 0.5f;
+  float weight(const BsdfContext& ctx) const { return eval_fraction(*weight_, ctx.uv, 0.5f); }
+
+  // With the weight w at the point, read once per call.
+  Color eval_with(float w, const BsdfContext& ctx, Vec3 wo, Vec3 wi) const {
+    Color f;
+    if (w < 1) f += first_->eval(ctx, wo, wi) * (1 - w);
+    if (w > 0) f += second_->eval(ctx, wo, wi) * w;
+    return f;
+  }
+
+  float pdf_with(float w, const BsdfContext& ctx, Vec3 wo, Vec3 wi) const {
+    float p = 0;
+    if (w < 1) p += first_->pdf(ctx, wo, wi) * (1 - w);
+    if (w > 0) p += second_->pdf(ctx, wo, wi) * w;
+    return p;
   }
 
   std::shared_ptr<Texture> weight_;

@@ -66,10 +66,7 @@ class MaskBsdf final : public Bsdf {
   }
 
  private:
-  float opacity(const BsdfContext& ctx) const {
-    const float a = opacity_->eval(ctx.uv).luminance();
-    return std::isfinite(a) ? std::clamp(a, 0.0f, 1.0f) : 1.0f;
-  }
+  float opacity(const BsdfContext& ctx) const { return eval_fraction(*opacity_, ctx.uv, 1.0f); }
 
   std::shared_ptr<Texture> opacity_;
   std::shared_ptr<Bsdf> nested_;

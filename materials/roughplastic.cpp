@@ -9,8 +9,9 @@
 // taken to reach the diffuse base: where `plastic` transmits 1 - F(cos),
 // this model transmits 1 - E(cos), E being the coating's directional albedo
 // (f_spec's reflectance for ks = 1, tabulated over cos(theta) once per
-// material, and over the range of a roughness texture). So light lost to masking is not lost to the material, which
-// keeps a white material white at every roughness. The diffuse part is
+// material, and over the range of a roughness texture). So light lost to
+// masking is not lost to the material, which keeps a white material white
+// at every roughness. The diffuse part is
 // plastic's, with 1/eta^2 written as (1 - F_dr) / (1 - F_dr,ext) and the
 // external diffuse reflectance F_dr,ext replaced by E's cosine-weighted mean
 // E_avg:
@@ -61,11 +62,10 @@ class RoughPlasticBsdf final : public Bsdf {
       : roughness_(props),
         kd_(read_reflectance(props, "diffuse_reflectance")),
         ks_(read_reflectance(props, "specular_reflectance")),
-        eta_(read_ior(props, "int_ior") / read_ior(props, "ext_ior")),
+        eta_(checked_eta(props)),
         nonlinear_(props.get_bool("nonlinear")),
         sample_visible_(props.get_bool("sample_visible")),
         coating_(roughness_.type(), roughness_.lowest(), roughness_.highest(), eta_) {
-    if (!(eta_ > 0) || !std::isfinite(eta_)) throw props.error("int_ior", "int_ior / ext_ior must be positive");
     fdr_ = internal_diffuse_reflectance(eta_);
   }
 
@@ -73,23 +73,22 @@ class RoughPlasticBsdf final : public Bsdf {
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};
-    return eval_with(roughness_.at(ctx.uv), ctx, wo, wi);
+    return eval_with(at(ctx, wo), wo, wi);
   }
 
   float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return 0;
-    return pdf_with(roughness_.at(ctx.uv), ctx, wo, wi);
+    return pdf_with(at(ctx, wo), wo, wi);
   }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
     if (cos_theta(wo) <= 0) return std::nullopt;
-    const MicrofacetDistribution dist = roughness_.at(ctx.uv);
-    const float p_spec = specular_probability(dist, ctx, wo);
-    if (!(p_spec >= 0)) return std::nullopt;  // black
+    const ShadingPoint p = at(ctx, wo);
+    if (!(p.p_spec >= 0)) return std::nullopt;  // black
     Vec3 wi;
     uint32_t lobe;
-    if (u_lobe < p_spec) {
-      const Vec3 m = sample_visible_ ? dist.sample(wo, u) : dist.sample_D(u);
+    if (u_lobe < p.p_spec) {
+      const Vec3 m = sample_visible_ ? p.dist.sample(wo, u) : p.dist.sample_D(u);
       if (!(dot(wo, m) > 0)) return std::nullopt;
       wi = reflect(wo, m);
       lobe = kGlossyReflection;
@@ -98,32 +97,55 @@ class RoughPlasticBsdf final : public Bsdf {
       lobe = kDiffuseReflection;
     }
     if (!(cos_theta(wi) > 0)) return std::nullopt;
-    const float pdf_wi = pdf_with(dist, ctx, wo, wi);
+    const float pdf_wi = pdf_with(p, wo, wi);
     if (!(pdf_wi > 0) || !std::isfinite(pdf_wi)) return std::nullopt;
-    return BsdfSample{wi, eval_with(dist, ctx, wo, wi), pdf_wi, lobe, 1};
+    return BsdfSample{wi, eval_with(p, wo, wi), pdf_wi, lobe, 1};
   }
 
   // Exact up to the tabulation of E.
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     if (cos_theta(wo) <= 0) return {};
-    const float e = coating_(roughness_.at(ctx.uv).alpha_u(), cos_theta(wo));
-    return ks_->eval(ctx.uv) * e + base(kd_->eval(ctx.uv)) * ((1 - fdr_) * (1 - e));
+    const ShadingPoint p = at(ctx, wo);
+    return p.ks * p.e_o + base(p.kd) * ((1 - fdr_) * (1 - p.e_o));
   }
 
  private:
-  Color eval_with(const MicrofacetDistribution& dist, const BsdfContext& ctx, Vec3 wo, Vec3 wi) const {
-    const float alpha = dist.alpha_u();
-    const float diffuse = (1 - fdr_) * (1 - coating_(alpha, cos_theta(wo))) * (1 - coating_(alpha, cos_theta(wi))) /
-                          (kPi * (1 - coating_.mean(alpha)));
-    return base(kd_->eval(ctx.uv)) * diffuse + ks_->eval(ctx.uv) * specular(dist, wo, wi);
+  // Checked before the coating's tables are built from it.
+  static float checked_eta(const Properties& props) {
+    const float eta = read_ior(props, "int_ior") / read_ior(props, "ext_ior");
+    if (!(eta > 0) || !std::isfinite(eta)) throw props.error("int_ior", "int_ior / ext_ior must be positive");
+    return eta;
   }
 
-  float pdf_with(const MicrofacetDistribution& dist, const BsdfContext& ctx, Vec3 wo, Vec3 wi) const {
-    const float p_spec = specular_probability(dist, ctx, wo);
-    if (!(p_spec >= 0)) return 0;
+  // What the textures and the coating's table give at a shading point seen
+  // from wo, read once per call: eval, pdf and sample all need them.
+  struct ShadingPoint {
+    MicrofacetDistribution dist;
+    Color kd, ks;
+    float e_o;     // the coating's albedo E(cos theta_o)
+    float p_spec;  // the glossy lobe's sampling probability; NaN where the material is black
+  };
+
+  ShadingPoint at(const BsdfContext& ctx, Vec3 wo) const {
+    const MicrofacetDistribution dist = roughness_.at(ctx.uv);
+    const Color kd = kd_->eval(ctx.uv), ks = ks_->eval(ctx.uv);
+    const float e_o = coating_(dist.alpha_u(), cos_theta(wo));
+    const float s = e_o * ks.average(), d = (1 - e_o) * kd.average();
+    return {dist, kd, ks, e_o, s + d > 0 ? s / (s + d) : std::nanf("")};
+  }
+
+  Color eval_with(const ShadingPoint& p, Vec3 wo, Vec3 wi) const {
+    const float alpha = p.dist.alpha_u();
+    const float diffuse =
+        (1 - fdr_) * (1 - p.e_o) * (1 - coating_(alpha, cos_theta(wi))) / (kPi * (1 - coating_.mean(alpha)));
+    return base(p.kd) * diffuse + p.ks * specular(p.dist, wo, wi);
+  }
+
+  float pdf_with(const ShadingPoint& p, Vec3 wo, Vec3 wi) const {
+    if (!(p.p_spec >= 0)) return 0;
     const Vec3 m = normalize(wo + wi);
-    const float spec = p_spec > 0 ? (sample_visible_ ? dist.pdf(wo, m) : dist.pdf_D(m)) / (4 * dot(wo, m)) : 0.0f;
-    return p_spec * spec + (1 - p_spec) * cosine_hemisphere_pdf(cos_theta(wi));
+    const float spec = p.p_spec > 0 ? (sample_visible_ ? p.dist.pdf(wo, m) : p.dist.pdf_D(m)) / (4 * dot(wo, m)) : 0.0f;
+    return p.p_spec * spec + (1 - p.p_spec) * cosine_hemisphere_pdf(cos_theta(wi));
   }
 
   float specular(const MicrofacetDistribution& dist, Vec3 wo, Vec3 wi) const {
@@ -136,13 +158,6 @@ class RoughPlasticBsdf final : public Bsdf {
   Color base(Color kd) const {
     const auto one = [&](float k) { return k / std::max(1 - (nonlinear_ ? k : 1.0f) * fdr_, 1e-6f); };
     return {one(kd.r), one(kd.g), one(kd.b)};
-  }
-
-  // NaN where the material is black.
-  float specular_probability(const MicrofacetDistribution& dist, const BsdfContext& ctx, Vec3 wo) const {
-    const float e = coating_(dist.alpha_u(), cos_theta(wo));
-    const float s = e * ks_->eval(ctx.uv).average(), d = (1 - e) * kd_->eval(ctx.uv).average();
-    return s + d > 0 ? s / (s + d) : std::nanf("");
   }
 
   MicrofacetRoughness roughness_;

@@ -56,7 +56,7 @@ class Mutant:
             diff = "diff " + diff
         self.diff = diff
         self.header = head.strip() + "\n"
-        fields = dict(re.findall(r"^(\w+):\s*(.*)$", head, re.M))
+        fields = dict(re.findall(r"^(\w+):[ \t]*(.*)$", head, re.M))
         self.bug = fields.get("Bug", "")
         self.tests = fields.get("Tests", "").split()
         self.equivalent = fields.get("Equivalent")
@@ -88,18 +88,29 @@ def sync_tree():
 
 
 def apply(mutant):
-    args = ["patch", "-p1", "--forward", "--silent", "--no-backup-if-mismatch", "-r", "-", "-d", str(TREE)]
+    # Offsets are fine; fuzz could plant the bug on a similar line elsewhere.
+    args = ["patch", "-p1", "--forward", "--silent", "--fuzz=0", "--no-backup-if-mismatch", "-r", "-", "-d", str(TREE)]
     return subprocess.run(args, input=mutant.diff, text=True, capture_output=True).returncode == 0
 
 
-def restore(mutant):
-    """The files as in the tree, with fresh time stamps so that the next build recompiles them."""
-    for f in mutant.files:
-        shutil.copy(ROOT / f, TREE / f)
+def saved(mutant):
+    return {f: (TREE / f).read_bytes() for f in mutant.files}
+
+
+def restore(files):
+    """Writes the files back as they were before the mutant; the fresh time
+    stamps make the next build recompile them."""
+    for f, data in files.items():
+        (TREE / f).write_bytes(data)
+
+
+class SpecRun:
+    def __init__(self, failing, failed, tests_run):
+        self.failing, self.failed, self.tests_run = failing, failed, tests_run
 
 
 def run_tests_spec(spec, timeout):
-    """Runs one executable[:filter]; returns whether it failed and what failed."""
+    """Runs one executable[:filter]: whether it failed, what failed, how many tests ran."""
     exe, _, gtest_filter = spec.partition(":")
     cmd = [str(BUILD / "tests" / exe)]
     if gtest_filter:
@@ -107,19 +118,21 @@ def run_tests_spec(spec, timeout):
     try:
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=TREE)
     except subprocess.TimeoutExpired:
-        return True, [f"{exe} (timed out)"]
+        return SpecRun(True, [f"{exe} (timed out)"], 0)
+    ran = re.search(r"^\[==========\] (\d+) tests? from .* ran\.", r.stdout, re.M)
+    tests_run = int(ran.group(1)) if ran else 0
     if r.returncode == 0:
-        return False, []
+        return SpecRun(False, [], tests_run)
     names = re.findall(r"^\[  FAILED  \] ([\w/.]+)(?:,|$| \()", r.stdout, re.M)
-    return True, sorted(set(names)) or [f"{exe} (exit {r.returncode})"]
+    return SpecRun(True, sorted(set(names)) or [f"{exe} (exit {r.returncode})"], tests_run)
 
 
-def run_tests(mutant, timeout):
+def run_tests(mutant, timeouts):
     failed, caught = [], False
     for spec in mutant.tests:
-        failing, names = run_tests_spec(spec, timeout)
-        caught |= failing
-        failed += names
+        run = run_tests_spec(spec, timeouts[spec])
+        caught |= run.failing
+        failed += run.failed
     return caught, failed
 
 
@@ -133,13 +146,14 @@ def refresh(mutants):
     stale = []
     sync_tree()
     for m in mutants:
-        before = {f: (TREE / f).read_text() for f in m.files}
+        original = saved(m)
         applied = apply(m)
         after = {f: (TREE / f).read_text() for f in m.files}
-        restore(m)
+        restore(original)
         if not applied:
             stale.append(m.name)
             continue
+        before = {f: data.decode() for f, data in original.items()}
         diff = "".join(
             "".join(difflib.unified_diff(before[f].splitlines(True), after[f].splitlines(True), f"a/{f}", f"b/{f}"))
             for f in m.files)
@@ -170,9 +184,11 @@ def main():
     ap.add_argument("--bug")
     ap.add_argument("--tests")
     ap.add_argument("--jobs", type=int, default=os.cpu_count())
-    ap.add_argument("--timeout", type=int, default=900, help="seconds per test executable")
+    ap.add_argument("--timeout", type=int, default=900, help="seconds for each test selection's unmutated run")
     args = ap.parse_args()
     if args.add:
+        if not args.bug or not args.tests:
+            ap.error("--add needs --bug and --tests")
         return add(*args.add, args.bug, args.tests)
 
     mutants = [Mutant(p) for p in sorted(CATALOGUE.rglob("*.patch"))]
@@ -194,14 +210,22 @@ def main():
         sys.exit("the unmutated tree does not build:\n" + log[-3000:])
     specs = sorted({t for m in runnable for t in m.tests})
     print(f"running the {len(specs)} named test selections without any mutant", flush=True)
+    # A mutant may make tests slower, or hang them: each selection gets five
+    # times its unmutated time, and half a minute.
+    timeouts = {}
     for spec in specs:
-        failing, failed = run_tests_spec(spec, args.timeout)
-        if failing:
-            sys.exit(f"{spec} fails without any mutant: {', '.join(failed)}")
+        start = time.time()
+        run = run_tests_spec(spec, args.timeout)
+        if run.failing:
+            sys.exit(f"{spec} fails without any mutant: {', '.join(run.failed)}")
+        if run.tests_run == 0:
+            sys.exit(f"{spec} runs no test: its filter matches nothing")
+        timeouts[spec] = 5 * (time.time() - start) + 30
 
     results = []
     for m in runnable:
         start = time.time()
+        original = saved(m)
         if not apply(m):
             status, detail = "does not apply", "run --refresh, or rewrite the patch"
         else:
@@ -209,9 +233,9 @@ def main():
             if not ok:
                 status, detail = "does not compile", ""
             else:
-                caught, failed = run_tests(m, args.timeout)
+                caught, failed = run_tests(m, timeouts)
                 status, detail = ("caught", ", ".join(failed)) if caught else ("SURVIVED", "")
-        restore(m)
+        restore(original)
         results.append((m, status, detail))
         print(f"{status:16} {m.name:48} {time.time() - start:5.0f} s  {detail}", flush=True)
 

@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "core/camera/film_window.h"
 #include "core/camera/sensor.h"
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
@@ -25,7 +26,7 @@ namespace {
 class OrthographicSensor final : public Sensor {
  public:
   explicit OrthographicSensor(const Properties& props)
-      : Sensor(props), near_(props.get_float("near_clip")), far_(props.get_float("far_clip")) {
+      : Sensor(props), near_(props.get_float("near_clip")), far_(props.get_float("far_clip")), window_(*film()) {
     if (!(near_ >= 0 && far_ > near_)) throw props.error("far_clip", "need 0 <= near_clip < far_clip");
     if (props.has("focus_distance")) props.warn("focus_distance", "is ignored: parallel rays have no focus");
     const Transform to_world = props.get_transform("to_world");
@@ -36,20 +37,19 @@ class OrthographicSensor final : public Sensor {
     // (The loader refuses singular transforms, so no axis is zero.)
     const float lx = length(axis_x_), ly = length(axis_y_);
     forward_ = normalize(z);
+    dual_x_ = axis_x_ / (lx * lx);
+    dual_y_ = axis_y_ / (ly * ly);
     // Rays leave the film at right angles; a shear would tilt them.
     if (std::abs(dot(axis_x_, axis_y_)) > 1e-3f * lx * ly || std::abs(dot(axis_x_, forward_)) > 1e-3f * lx ||
         std::abs(dot(axis_y_, forward_)) > 1e-3f * ly)
       throw props.error("to_world", "must not shear (the film's axes and the view direction stay at right angles)");
-    const Vec2i full = film()->full_size(), crop = film()->crop_offset();
-    size_ = {float(full.x), float(full.y)};
-    crop_ = {float(crop.x), float(crop.y)};
-    window_ = {float(film()->width()), float(film()->height())};
-    aspect_y_ = size_.y / size_.x;
-    area_ = lx * ly * 4 * aspect_y_ * (window_.x / size_.x) * (window_.y / size_.y);
+    aspect_y_ = window_.size.y / window_.size.x;
+    area_ = lx * ly * 4 * aspect_y_ * window_.fraction();
   }
 
   Ray generate_ray(Vec2 raster, Vec2) const override {
-    const float x = 1 - 2 * (raster.x + crop_.x) / size_.x, y = (1 - 2 * (raster.y + crop_.y) / size_.y) * aspect_y_;
+    const Vec2 u = window_.to_film(raster);
+    const float x = 1 - 2 * u.x, y = (1 - 2 * u.y) * aspect_y_;
     return {origin_ + axis_x_ * x + axis_y_ * y, forward_, far_, near_};
   }
 
@@ -83,15 +83,17 @@ class OrthographicSensor final : public Sensor {
   // The raster position of a point, projected onto the film along forward.
   bool to_raster(Vec3 p, Vec2* raster) const {
     const Vec3 rel = p - origin_;
-    const float x = dot(rel, axis_x_) / squared_length(axis_x_), y = dot(rel, axis_y_) / squared_length(axis_y_);
-    raster->x = (1 - x) * 0.5f * size_.x - crop_.x;
-    raster->y = (1 - y / aspect_y_) * 0.5f * size_.y - crop_.y;
-    return raster->x >= 0 && raster->x < window_.x && raster->y >= 0 && raster->y < window_.y;
+    const float x = dot(rel, dual_x_), y = dot(rel, dual_y_);
+    *raster = window_.to_raster({(1 - x) * 0.5f, (1 - y / aspect_y_) * 0.5f});
+    return window_.contains(*raster);
   }
 
   float near_, far_;
+  FilmWindow window_;
   Vec3 origin_, axis_x_, axis_y_, forward_;
-  Vec2 size_{1, 1}, crop_, window_{1, 1};
+  // The axes over their squared lengths: a point's film coordinates are its
+  // dot products with them.
+  Vec3 dual_x_, dual_y_;
   float aspect_y_ = 1, area_ = 4;
 };
 

@@ -1,7 +1,7 @@
 #include "core/camera/perspective_projection.h"
 
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
@@ -15,35 +15,31 @@ namespace {
 float focal_length_fov(const Properties& props) {
   std::string text = props.get_string("focal_length");
   if (text.size() > 2 && text.ends_with("mm")) text.resize(text.size() - 2);
-  char* end = nullptr;
-  const double f = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !(f > 0) || !std::isfinite(f))
+  double f = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), f);
+  if (error != std::errc() || end != text.data() + text.size() || !(f > 0) || !std::isfinite(f))
     throw props.error("focal_length", "must be a positive length in millimetres, such as 50mm");
   return float(2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / (2 * f)) * 180 / M_PI);
 }
 
 }  // namespace
 
-PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film& film) {
+PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film& film) : window_(film) {
   if (props.has("fov") && props.has("focal_length"))
     throw props.error("focal_length", "give either fov or focal_length, not both");
   // As Mitsuba: without a fov, a focal length (by default a 50 mm lens).
   const bool by_focal_length = !props.has("fov");
   const float fov = by_focal_length ? focal_length_fov(props) : props.get_float("fov");
   if (!(fov > 0 && fov < 180)) throw props.error("fov", "must be between 0 and 180 degrees");
-  const Vec2i full = film.full_size(), crop = film.crop_offset();
-  const float w = float(full.x), h = float(full.y);
+  const float w = window_.size.x, h = window_.size.y;
   // As Mitsuba: the principal point's offset from the film's centre, in
   // fractions of the film's width and height.
   const float ppx = props.get_float("principal_point_offset_x"), ppy = props.get_float("principal_point_offset_y");
   if (!std::isfinite(ppx)) throw props.error("principal_point_offset_x", "must be finite");
   if (!std::isfinite(ppy)) throw props.error("principal_point_offset_y", "must be finite");
-  // Raster positions of the crop window map to [0, 1]^2 over the film as
-  // u = (raster + crop offset) / size + principal point offset.
-  size_ = {w, h};
-  crop_ = {float(crop.x), float(crop.y)};
+  // A raster position maps to u = film position + principal point offset,
+  // and u spans [0, 1]^2 across the field of view.
   principal_point_ = {ppx, ppy};
-  window_ = {float(film.width()), float(film.height())};
   const std::string given_axis = props.get_string("fov_axis");
   if (given_axis != "x" && given_axis != "y" && given_axis != "diagonal" && given_axis != "smaller" &&
       given_axis != "larger")
@@ -64,21 +60,19 @@ PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film
   }
   // The crop window's part of the plane: importance integrates to one over
   // what is rendered.
-  plane_area_ = 4 * tan_x_ * tan_y_ * (window_.x / w) * (window_.y / h);
+  plane_area_ = 4 * tan_x_ * tan_y_ * window_.fraction();
 }
 
 Vec3 PerspectiveProjection::plane_point(Vec2 raster) const {
-  const Vec2 u{(raster.x + crop_.x) / size_.x + principal_point_.x,
-               (raster.y + crop_.y) / size_.y + principal_point_.y};
+  const Vec2 u = window_.to_film(raster) + principal_point_;
   return {-(2 * u.x - 1) * tan_x_, -(2 * u.y - 1) * tan_y_, 1};
 }
 
 bool PerspectiveProjection::to_raster(Vec3 d, Vec2* raster) const {
   if (d.z <= 0) return false;
   const float x = d.x / d.z, y = d.y / d.z;
-  raster->x = ((1 - x / tan_x_) * 0.5f - principal_point_.x) * size_.x - crop_.x;
-  raster->y = ((1 - y / tan_y_) * 0.5f - principal_point_.y) * size_.y - crop_.y;
-  return raster->x >= 0 && raster->x < window_.x && raster->y >= 0 && raster->y < window_.y;
+  *raster = window_.to_raster(Vec2{(1 - x / tan_x_) * 0.5f, (1 - y / tan_y_) * 0.5f} - principal_point_);
+  return window_.contains(*raster);
 }
 
 std::vector<ParamSpec> perspective_projection_params() {

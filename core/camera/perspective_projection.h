@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "core/camera/film_window.h"
 #include "core/film/film.h"
 #include "core/math/vec.h"
 #include "core/registry/param_spec.h"
@@ -27,7 +28,8 @@ class PerspectiveProjection {
   float plane_area() const { return plane_area_; }
 
  private:
-  Vec2 size_{1, 1}, crop_, principal_point_, window_;
+  FilmWindow window_;
+  Vec2 principal_point_;
   float tan_x_ = 1, tan_y_ = 1, plane_area_ = 4;
 };
 

@@ -98,8 +98,8 @@ class ProjectiveSensor : public Sensor {
   ClipPlanes clip_planes() const override { return {origin_, forward_, near_, far_}; }
 
   std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2 u_lens) const override {
-    const Vec2 lens = square_to_uniform_disk_concentric(u_lens) * lens_radius_;
-    const Vec3 p_lens = lens_radius_ > 0 ? lens_point(lens) : origin_;
+    const Vec3 p_lens =
+        lens_radius_ > 0 ? lens_point(square_to_uniform_disk_concentric(u_lens) * lens_radius_) : origin_;
     Vec3 wi = p_lens - ref.p;
     const float dist2 = squared_length(wi);
     if (dist2 == 0) return std::nullopt;

@@ -13,6 +13,7 @@
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
 #include "core/shapes/shape.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 class AreaEmitter final : public Emitter {
  public:
   explicit AreaEmitter(const Properties& props)
-      : radiance_(read_emission_texture(props, "radiance")), where_(props.where()) {}
+      : radiance_(read_nonnegative_texture(props, "radiance")), where_(props.where()) {}
 
   void attach_shape(const Shape* shape) override {
     if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "core/texture/texture_parameter.h"
-
 namespace caustica {
 
 Color read_emission(const Properties& props, const std::string& name) {
@@ -13,14 +11,6 @@ Color read_emission(const Properties& props, const std::string& name) {
     if (v < 0) throw props.error(name, "must not be negative");
   }
   return c;
-}
-
-std::shared_ptr<Texture> read_emission_texture(const Properties& props, const std::string& name) {
-  auto texture = read_texture(props, name);
-  const ValueRange range = texture->range();
-  if (!std::isfinite(range.lowest) || !std::isfinite(range.highest)) throw props.error(name, "must be finite");
-  if (range.lowest < 0) throw props.error(name, "must not be negative");
-  return texture;
 }
 
 }  // namespace caustica

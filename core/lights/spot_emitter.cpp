@@ -18,6 +18,7 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
+#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
@@ -26,7 +27,7 @@ class SpotEmitter final : public Emitter {
  public:
   explicit SpotEmitter(const Properties& props)
       : intensity_(read_emission(props, "intensity")),
-        texture_(props.has("texture") ? read_emission_texture(props, "texture") : nullptr),
+        texture_(props.has("texture") ? read_nonnegative_texture(props, "texture") : nullptr),
         to_world_(props.get_transform("to_world")),
         to_local_(to_world_.inverse()),
         position_(to_world_.point(Vec3d())) {

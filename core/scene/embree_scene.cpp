@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/shapes/rtc_scene.h"
+
 namespace caustica {
 
 RTCRay to_rtc(const Ray& ray) {
@@ -25,17 +27,7 @@ EmbreeScene::EmbreeScene(const std::vector<std::shared_ptr<Shape>>& shapes) {
   if (!device_)
     throw std::runtime_error("cannot create an Embree device (error " +
                              std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
-  scene_ = rtcNewScene(device_);
-  // Robust mode makes the triangle test watertight and conservative, which
-  // the floating-point error bounds of the hit points rely on.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  for (const auto& shape : shapes) {
-    const unsigned id = shape->attach(device_, scene_);
-    if (id >= by_geom_id_.size()) by_geom_id_.resize(id + 1, nullptr);
-    by_geom_id_[id] = shape.get();
-  }
-  rtcCommitScene(scene_);
+  scene_ = build_rtc_scene(device_, shapes, by_geom_id_);
   if (const RTCError error = rtcGetDeviceError(device_); error != RTC_ERROR_NONE)
     throw std::runtime_error("Embree failed to build the scene (error " + std::to_string(int(error)) + ")");
 }

@@ -7,6 +7,7 @@
 #include "core/errors/scene_error.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
+#include "core/shapes/rtc_scene.h"
 
 namespace caustica {
 
@@ -31,18 +32,8 @@ ShapeGroup::~ShapeGroup() {
 RTCScene ShapeGroup::rtc_scene(RTCDevice device) const {
   for (const auto& [d, scene] : built_)
     if (d == device) return scene;
-  RTCScene scene = rtcNewScene(device);
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
-  std::vector<const Shape*> by_id;
-  for (const auto& s : shapes_) {
-    const unsigned id = s->attach(device, scene);
-    if (id >= by_id.size()) by_id.resize(id + 1, nullptr);
-    by_id[id] = s.get();
-  }
-  rtcCommitScene(scene);
   // Every device attaches the shapes in the same order, so the ids agree.
-  by_geom_id_ = std::move(by_id);
+  RTCScene scene = build_rtc_scene(device, shapes_, by_geom_id_);
   built_.emplace_back(device, scene);
   return scene;
 }

@@ -35,7 +35,6 @@ class ShapeGroup final : public Shape {
   // The group's Embree scene on `device`, built at the first call.
   RTCScene rtc_scene(RTCDevice device) const;
   const Shape& shape(unsigned geom_id) const { return *by_geom_id_.at(geom_id); }
-  const std::vector<std::shared_ptr<Shape>>& shapes() const { return shapes_; }
 
   // A group is placed only through instances: these are never called.
   unsigned attach(RTCDevice, RTCScene) const override;

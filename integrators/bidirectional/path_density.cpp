@@ -16,13 +16,23 @@ float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pd
   return pdf * cos / dist2;
 }
 
+namespace {
+
+// A density per unit area across a bundle of parallel rays along d,
+// converted to the density per unit area on the surface of `to`.
+float parallel_to_area(const PathVertex& to, Vec3 d, float pdf_across) {
+  return to.has_normal() ? pdf_across * abs_dot(to.si.ng, d) : pdf_across;
+}
+
+}  // namespace
+
 float emission_density(const PathVertex& light, const PathVertex& next) {
   float pdf_pos = 0, pdf_dir = 0;
   if (light.environment) {
     // Environment rays start on a disk facing their direction, so the
     // density of the point they reach is the disk's, projected.
     light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
-    return next.has_normal() ? pdf_pos * abs_dot(next.si.ng, light.w_env) : pdf_pos;
+    return parallel_to_area(next, light.w_env, pdf_pos);
   }
   light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity}, light.si.ng, &pdf_pos, &pdf_dir);
   return solid_angle_to_area(light, next, pdf_dir);
@@ -47,7 +57,7 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
       scene.sensor().pdf_We({cur.p(), d, kInfinity}, &pdf_pos, &pdf_dir);
       // Parallel rays spread over the film's area reach next's surface with
       // the film's density, projected.
-      if (scene.sensor().delta_direction()) return next.has_normal() ? pdf_pos * abs_dot(next.si.ng, d) : pdf_pos;
+      if (scene.sensor().delta_direction()) return parallel_to_area(next, d, pdf_pos);
       return solid_angle_to_area(cur, next, pdf_dir);
     }
     case PathVertex::Kind::Light:

@@ -10,6 +10,7 @@
 // integrators and floors, against Student's t. Fixed seeds.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -26,7 +27,8 @@ namespace {
 
 // A 4x4 square at z = 0 whose four vertex normals lean 30 degrees toward +x.
 std::string vertex_normal_floor() {
-  const auto path = std::filesystem::temp_directory_path() / "caustica_tilted_floor.ply";
+  const auto path =
+      std::filesystem::temp_directory_path() / ("caustica_tilted_floor_" + std::to_string(getpid()) + ".ply");
   std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                          "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
@@ -78,7 +80,7 @@ TEST(ShadingNormals, LightTracingAndBidirectionalAgreeWithPath) {
             << "): " << est[i].mean << " +- " << est[i].standard_error << ", path " << path[i].mean << " +- "
             << path[i].standard_error;
       }
-      EXPECT_GE(lit, 16) << what << ": the lit floor should fill most of the view";
+      EXPECT_GE(lit, 16) << what << ": at least 16 of the 36 regions should see the lit floor";
     }
   }
 }
