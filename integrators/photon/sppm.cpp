@@ -23,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/math/constants.h"
@@ -98,7 +100,8 @@ class SppmPixels final : public IterationState {
   SppmPixels(const StochasticProgressivePhotonMapping& settings, const Scene& scene, uint64_t seed);
   bool iterate(uint64_t iteration, const std::atomic<bool>* stop) override;
   Color estimate(Vec2i pixel) const override;
-  std::string summary() const override { return "iterations=" + std::to_string(iterations_); }
+  // The radii's root mean square over the pixels: the trace of the schedule.
+  std::string summary() const override;
 
  private:
   void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration);
@@ -152,6 +155,14 @@ bool SppmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   });
   ++iterations_;
   return true;
+}
+
+std::string SppmPixels::summary() const {
+  double sum = 0;
+  for (const PixelState& px : pixels_) sum += double(px.radius) * px.radius;
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.6g", std::sqrt(sum / double(pixels_.size())));
+  return "iterations=" + std::to_string(iterations_) + ", rms radius=" + radius;
 }
 
 // D / n + tau / (n photons pi R^2).
