@@ -110,8 +110,11 @@ TEST(PhongBsdf, LobesAreNormalisedAtEveryExponent) {
   EXPECT_NEAR(reflected(*phong("1", "0", 30)), 1.0, 1e-3) << "diffuse";
 }
 
-TEST(PhongBsdf, HardCasesStayFinite) {
-  // Huge exponents, grazing directions and extreme random numbers.
+// Huge exponents, grazing directions and extreme random numbers stay
+// finite; at normal incidence a lobe of exponent 1e4 or 1e6 lies wholly
+// above the horizon, so the material reflects kd + ks = 1 (z-test at 4
+// standard errors), its glossy samples within a degree of the normal.
+TEST(PhongBsdf, HardCasesStayFiniteAndHugeExponentsKeepTheirEnergy) {
   for (float exponent : {0.0f, 1e4f, 1e6f}) {
     const auto bsdf = phong("0.1", "0.9", exponent);
     for (float theta : {0.0f, 1.5607f, 1.5707f}) {
@@ -127,6 +130,14 @@ TEST(PhongBsdf, HardCasesStayFinite) {
       const auto c = test::check_samples(*bsdf, wo, {}, 2000);
       EXPECT_EQ(c.non_finite, 0);
       EXPECT_TRUE(bsdf->eval({}, wo, Vec3(wo.x * -1, wo.y * -1, wo.z)).is_finite());
+      if (theta == 0 && exponent > 0) {
+        const auto a = test::albedo(*bsdf, wo, {}, 4000);
+        EXPECT_NEAR(a.mean.r, 1.0, 4 * a.standard_error.r + 1e-4) << "n " << exponent;
+        const auto glossy = bsdf->sample({}, wo, 0, {0.3f, 0.8f});
+        ASSERT_TRUE(glossy);
+        EXPECT_EQ(glossy->lobe, uint32_t(kGlossyReflection));
+        EXPECT_GT(glossy->wi.z, std::cos(M_PI / 180)) << "n " << exponent;
+      }
     }
   }
   // Black material: nothing sampled, nothing evaluated.
