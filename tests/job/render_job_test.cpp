@@ -86,18 +86,19 @@ double largest_difference(const Image& a, const Image& b, bool* identical) {
 // another order than in one render, so in general the merge is exact only
 // up to that order; in float images it is exact here.
 TEST(RenderJob, DisjointSampleRangesMergeIntoTheRenderOfTheirUnion) {
-  const auto scene = load_scene(kGlass, {{"res", "24"}});
-  for (const char* integrator : {"path", "photon:photons=3000", "bdpt", "ptracer"}) {
-    const RenderFile whole = render_range(scene, integrator, 0, 21);
-    const RenderFile merged =
-        merge_sample_ranges({render_range(scene, integrator, 13, 8), render_range(scene, integrator, 0, 5),
-                             render_range(scene, integrator, 5, 8)});
-    bool identical = false;
-    const double difference = largest_difference(merged.image, whole.image, &identical);
-    EXPECT_TRUE(identical) << integrator << ": largest relative difference " << difference;
-    EXPECT_EQ(merged.metadata.at("caustica:spp"), "21") << integrator;
-    EXPECT_EQ(merged.metadata.at("caustica:ranges"), "0-20") << integrator;
-  }
+  for (const char* sampler : {"independent", "ldsampler"})
+    for (const char* integrator : {"path", "photon:photons=3000", "bdpt", "ptracer"}) {
+      const auto scene = load_scene(kGlass, {{"res", "24"}, {"sampler", sampler}});
+      const RenderFile whole = render_range(scene, integrator, 0, 21);
+      const RenderFile merged =
+          merge_sample_ranges({render_range(scene, integrator, 13, 8), render_range(scene, integrator, 0, 5),
+                               render_range(scene, integrator, 5, 8)});
+      bool identical = false;
+      const double difference = largest_difference(merged.image, whole.image, &identical);
+      EXPECT_TRUE(identical) << sampler << ", " << integrator << ": largest relative difference " << difference;
+      EXPECT_EQ(merged.metadata.at("caustica:spp"), "21") << integrator;
+      EXPECT_EQ(merged.metadata.at("caustica:ranges"), "0-20") << integrator;
+    }
 }
 
 // A merge with a gap keeps its ranges, so it merges with what fills the
