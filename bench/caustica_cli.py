@@ -24,9 +24,14 @@ class Caustica:
         return result.stdout
 
     def render(self, scene, output, *, integrator, spp, seed, res):
-        """Renders a float EXR (and its PNG); returns the EXR's metadata."""
-        self._run(["render", scene, "-o", output, "--integrator", integrator, "--spp", spp, "--seed", seed,
-                   "-D", f"res={res}", "--threads", self.threads, "--exr-format", "float", "-q"])
+        """Renders a float EXR (and its PNG); returns the EXR's metadata.
+
+        `integrator` may name a sampler after an '@' (path@ldsampler), which the scene takes as $sampler.
+        """
+        name, _, sampler = integrator.partition("@")
+        defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}"] if sampler else [])
+        self._run(["render", scene, "-o", output, "--integrator", name, "--spp", spp, "--seed", seed, *defines,
+                   "--threads", self.threads, "--exr-format", "float", "-q"])
         return read_metadata(output)
 
     def merge(self, inputs, output):

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The convergence and variance suite: what accuracy costs in time.
 
-For each scene: a reference (bench/reference.py), then every integrator at
-1, 2, 4, ... samples per pixel, each run's error against the reference
+For each scene: a reference (bench/reference.py), then every integrator with
+each sampler (named INTEGRATOR@SAMPLER but for the first) at 1, 2, 4, ...
+samples per pixel, each run's error against the reference
 (bench/convergence.py), log-log plots of error against time, per-pixel
 variance images, and a summary table. Everything goes to OUT:
 
@@ -32,7 +33,7 @@ import summary
 import variance
 from caustica_cli import Caustica
 from reference import make_reference
-from suite_config import INTEGRATORS, REFERENCE_INTEGRATOR, SCALES, TWIN_SEED_BASE, spp_ladder
+from suite_config import INTEGRATORS, REFERENCE_INTEGRATOR, SAMPLERS, SCALES, TWIN_SEED_BASE, runs, spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -53,6 +54,8 @@ def parse_args():
     parser.add_argument("--out", type=Path, help="output folder (default: bench-results/SCALE)")
     parser.add_argument("--integrators", default=",".join(INTEGRATORS),
                         help="comma-separated; unknown ones are skipped (default: %(default)s)")
+    parser.add_argument("--samplers", default=",".join(SAMPLERS),
+                        help="comma-separated; every integrator runs with each (default: %(default)s)")
     parser.add_argument("--scenes", help="comma-separated names under scenes/ (default: the scale's)")
     parser.add_argument("--threads", type=int, default=os.cpu_count())
     parser.add_argument("--caustica", type=Path, default=ROOT / "build" / "caustica")
@@ -79,7 +82,9 @@ def run_scenes(caustica, scenes, integrators, scale, out):
 def measure_variance(caustica, rows, out, res):
     """variance.csv and plots/variance.png from each integrator's longest run; returns the CSV rows.
 
-    Runs without variance layers (integrators that splat) get an independent twin render to estimate it from.
+    Runs without variance layers (integrators that splat), and runs with a stratifying sampler (named
+    INTEGRATOR@SAMPLER), whose layers assume independent samples and overstate the variance, get an independent
+    twin render to estimate it from.
     """
     measured = []
     for scene, by_integrator in summary.by_scene_and_integrator(rows).items():
@@ -88,7 +93,7 @@ def measure_variance(caustica, rows, out, res):
             last = runs[-1]
             exr = convergence.render_path(out / "renders" / scene, integrator, int(last["spp"]))
             twin = None
-            if not variance.has_variance_layers(exr):
+            if "@" in integrator or not variance.has_variance_layers(exr):
                 twin = exr.with_name(exr.stem + "-twin.exr")
                 caustica.render(ROOT / "scenes" / f"{scene}.xml", twin, integrator=integrator, spp=int(last["spp"]),
                                 seed=TWIN_SEED_BASE + len(runs), res=res)
@@ -124,7 +129,7 @@ def main():
     scale = SCALES[args.scale]
     out = (args.out or ROOT / "bench-results" / args.scale).resolve()
     scenes = args.scenes.split(",") if args.scenes else list(scale.scenes)
-    integrators = [i for i in args.integrators.split(",") if i]
+    integrators = runs([i for i in args.integrators.split(",") if i], [s for s in args.samplers.split(",") if s])
     print(f"caustica bench, scale {args.scale}: {scenes} x {integrators} at {spp_ladder(scale.max_spp)} spp, "
           f"{scale.res}x{scale.res} pixels -> {out}")
 

@@ -10,6 +10,17 @@ from dataclasses import dataclass
 # In plot and table order.
 INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=10000", "direct"]
 
+# Every integrator runs with each sampler; a run is named INTEGRATOR@SAMPLER
+# for every sampler but the first (the scenes' default), which keeps the
+# integrator's plain name.
+SAMPLERS = ["independent", "ldsampler"]
+
+
+def runs(integrators, samplers):
+    """The run names of integrators x samplers, each integrator's samplers together."""
+    return [i if s == SAMPLERS[0] else f"{i}@{s}" for i in integrators for s in samplers]
+
+
 # The Cornell-box family: diffuse, glass (caustics), mirror, glossy metal.
 SCENES = ["cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"]
 

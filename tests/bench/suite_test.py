@@ -26,7 +26,8 @@ class TinySuite(unittest.TestCase):
         cls.out = Path(cls.tmp.name)
         cls.result = subprocess.run(
             ["/usr/bin/python3", str(ROOT / "bench" / "suite.py"), "--scale", "tiny", "--out", str(cls.out),
-             "--caustica", BINARY, "--threads", "2", "--integrators", "path,direct,ptracer,no-such-integrator"],
+             "--caustica", BINARY, "--threads", "2", "--integrators", "path,direct,ptracer,no-such-integrator",
+             "--samplers", "independent,ldsampler"],
             capture_output=True, text=True)
 
     @classmethod
@@ -43,7 +44,8 @@ class TinySuite(unittest.TestCase):
         self.assertTrue(any("E[(x - ref)^2] = E[(x - truth)^2] + Var[ref]" in line for line in lines))
         rows = list(csv.DictReader(line for line in lines if not line.startswith("#")))
         self.assertEqual([(r["integrator"], int(r["spp"])) for r in rows],
-                         [(i, s) for i in ("path", "direct", "ptracer") for s in (1, 2, 4, 8, 16)])
+                         [(i, s) for i in ("path", "path@ldsampler", "direct", "direct@ldsampler", "ptracer",
+                                           "ptracer@ldsampler") for s in (1, 2, 4, 8, 16)])
         for r in rows:
             self.assertEqual(r["scene"], "cornell-box")
             self.assertEqual(int(r["samples"]), 16 * 16 * int(r["spp"]))
@@ -63,12 +65,16 @@ class TinySuite(unittest.TestCase):
             self.assertGreater((self.out / "plots" / name).stat().st_size, 1000, name)
         with open(self.out / "variance.csv") as f:
             rows = list(csv.DictReader(f))
-        self.assertEqual([r["integrator"] for r in rows], ["path", "direct", "ptracer"])
+        self.assertEqual([r["integrator"] for r in rows],
+                         ["path", "path@ldsampler", "direct", "direct@ldsampler", "ptracer", "ptracer@ldsampler"])
         for r in rows:
             self.assertGreater(float(r["mean_variance"]), 0)
             self.assertAlmostEqual(float(r["variance_per_sample"]), float(r["mean_variance"]) * 16, places=6)
-        # ptracer splats and writes no variance layers: an independent twin render stands in.
+        # ptracer splats and writes no variance layers, and ldsampler's layers would overstate its variance: an
+        # independent twin render stands in.
         self.assertTrue((self.out / "renders" / "cornell-box" / "ptracer-000016spp-twin.exr").exists())
+        self.assertTrue((self.out / "renders" / "cornell-box" / "path@ldsampler-000016spp-twin.exr").exists())
+        self.assertFalse((self.out / "renders" / "cornell-box" / "path-000016spp-twin.exr").exists())
         summary = (self.out / "summary.md").read_text()
         self.assertIn("| cornell-box | path | 16 |", summary)
         self.assertIn("| cornell-box | direct | 16 |", summary)
