@@ -6,6 +6,7 @@
 
 #include "core/bsdf/fresnel.h"
 #include "tests/support/bsdf_checks.h"
+#include "tests/support/microfacet_oracle.h"
 
 namespace caustica {
 namespace {
@@ -191,19 +192,8 @@ TEST(DielectricBsdf, IndexMatchedPassesStraightThrough) {
         }
 }
 
-// Unpolarised reflectance of a smooth interface from the angle of
-// incidence (cosine c) and the relative index eta, written from Snell's law
-// and the Fresnel amplitudes: 1 beyond the critical angle.
-double fresnel_by_angles(double c, double eta) {
-  const double sin_t2 = (1 - c * c) / (eta * eta);
-  if (sin_t2 >= 1) return 1;
-  const double t = std::sqrt(1 - sin_t2);
-  const double rs = (c - eta * t) / (c + eta * t), rp = (eta * c - t) / (eta * c + t);
-  return (rs * rs + rp * rp) / 2;
-}
-
-// Finite, and the furnace equal to what Fresnel's equations give, at normal
-// incidence, at grazing angles from both sides (total internal reflection
+// Finite, and the furnace equal to what Fresnel's equations (written in the
+// test's oracle) give, at normal incidence, at grazing angles from both sides (total internal reflection
 // included) and for an index of almost one.
 TEST(DielectricBsdf, FiniteAtGrazingAndNormalIncidence) {
   for (float eta : {1.5f, 1.0001f, 0.6f}) {
@@ -216,7 +206,7 @@ TEST(DielectricBsdf, FiniteAtGrazingAndNormalIncidence) {
         const auto a = test::albedo(*bsdf, wo, {mode, {}}, 1000);
         // Importance: every sample's weight is one. Radiance: refraction
         // scales by 1 / eta^2, eta across over eta on wo's side.
-        const double relative = z > 0 ? eta : 1 / eta, R = fresnel_by_angles(std::abs(wo.z), relative);
+        const double relative = z > 0 ? eta : 1 / eta, R = test::fresnel_reflectance(std::abs(wo.z), relative);
         const double expected = mode == TransportMode::Importance ? 1 : R + (1 - R) / (relative * relative);
         EXPECT_NEAR(a.mean.r, expected, 4 * a.standard_error.r + 1e-5)
             << "eta " << eta << " z " << z << (mode == TransportMode::Importance ? " importance" : " radiance");

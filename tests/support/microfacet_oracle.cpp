@@ -24,18 +24,16 @@ double lambda(const MicrofacetModel& model, D3 w) {
   return (std::erf(a) - 1) / 2 + std::exp(-a * a) / (2 * a * std::sqrt(M_PI));
 }
 
-// Unpolarised Fresnel reflectance at cosine c of the angle to the facet:
-// rs = (c - eta ct) / (c + eta ct), rp = (eta c - ct) / (eta c + ct), and 1
-// past the critical angle.
-double fresnel(double c, double eta) {
+}  // namespace
+
+// rs = (c - eta ct) / (c + eta ct), rp = (eta c - ct) / (eta c + ct).
+double fresnel_reflectance(double c, double eta) {
   const double sin2_t = (1 - c * c) / (eta * eta);
   if (sin2_t >= 1) return 1;
   const double ct = std::sqrt(1 - sin2_t);
   const double rs = (c - eta * ct) / (c + eta * ct), rp = (eta * c - ct) / (eta * c + ct);
   return (rs * rs + rp * rp) / 2;
 }
-
-}  // namespace
 
 double smith_lambda(const MicrofacetModel& model, Vec3 w) { return lambda(model, {w.x, w.y, w.z}); }
 
@@ -63,7 +61,7 @@ MicrofacetAlbedo microfacet_albedo(const MicrofacetModel& model, const Interface
       const double c = dot(wo, m);
       if (c <= 0) continue;
       const double weight = du / n_phi * c / (wo.z * m.z);
-      const double F = interface.dielectric ? fresnel(c, interface.eta) : 1;
+      const double F = interface.dielectric ? fresnel_reflectance(c, interface.eta) : 1;
       const D3 wr = 2 * c * m - wo;
       if (wr.z > 0) sum.reflected += weight * F / (1 + lambda_o + lambda(model, wr));
       if (interface.dielectric && F < 1) {

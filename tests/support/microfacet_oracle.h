@@ -20,6 +20,11 @@ struct MicrofacetModel {
 // a = 1 / (alpha t), (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)).
 double smith_lambda(const MicrofacetModel& model, Vec3 w);
 
+// Unpolarised Fresnel reflectance of a smooth interface at cosine c of the
+// angle of incidence, eta the index across over the index on the incident
+// side; 1 past the critical angle.
+double fresnel_reflectance(double c, double eta);
+
 // The interface below the surface a ray from wo meets.
 struct Interface {
   bool dielectric = false;  // else a perfect mirror (Fresnel 1)
