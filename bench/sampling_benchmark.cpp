@@ -9,13 +9,13 @@
 namespace caustica {
 namespace {
 
-std::unique_ptr<Sampler> independent_sampler() {
-  const PluginInfo* info = Registry::instance().find("sampler", "independent");
+std::unique_ptr<Sampler> make_sampler(const char* name) {
+  const PluginInfo* info = Registry::instance().find("sampler", name);
   return std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"bench", 0})))->clone();
 }
 
-void BM_StartSample(benchmark::State& state) {
-  auto sampler = independent_sampler();
+void BM_StartSample(benchmark::State& state, const char* name) {
+  auto sampler = make_sampler(name);
   uint64_t i = 0;
   for (auto _ : state) {
     sampler->start_sample(SampleKey::camera({int(i & 511), int(i >> 9 & 511)}), i, 0);
@@ -23,17 +23,36 @@ void BM_StartSample(benchmark::State& state) {
     ++i;
   }
 }
-BENCHMARK(BM_StartSample);
+BENCHMARK_CAPTURE(BM_StartSample, independent, "independent");
+BENCHMARK_CAPTURE(BM_StartSample, ldsampler, "ldsampler");
 
-void BM_Next2D(benchmark::State& state) {
-  auto sampler = independent_sampler();
-  sampler->start_sample(SampleKey::camera({0, 0}), 0, 0);
-  for (auto _ : state) benchmark::DoNotOptimize(sampler->next_2d());
+// A sample's first 32 draws, as a path of a few bounces makes them.
+void BM_Next1D(benchmark::State& state, const char* name) {
+  auto sampler = make_sampler(name);
+  uint64_t i = 0;
+  for (auto _ : state) {
+    if (i % 32 == 0) sampler->start_sample(SampleKey::camera({3, 4}), i / 32, 0);
+    benchmark::DoNotOptimize(sampler->next_1d());
+    ++i;
+  }
 }
-BENCHMARK(BM_Next2D);
+BENCHMARK_CAPTURE(BM_Next1D, independent, "independent");
+BENCHMARK_CAPTURE(BM_Next1D, ldsampler, "ldsampler");
+
+void BM_Next2D(benchmark::State& state, const char* name) {
+  auto sampler = make_sampler(name);
+  uint64_t i = 0;
+  for (auto _ : state) {
+    if (i % 16 == 0) sampler->start_sample(SampleKey::camera({3, 4}), i / 16, 0);
+    benchmark::DoNotOptimize(sampler->next_2d());
+    ++i;
+  }
+}
+BENCHMARK_CAPTURE(BM_Next2D, independent, "independent");
+BENCHMARK_CAPTURE(BM_Next2D, ldsampler, "ldsampler");
 
 void BM_CosineHemisphere(benchmark::State& state) {
-  auto sampler = independent_sampler();
+  auto sampler = make_sampler("independent");
   sampler->start_sample(SampleKey::camera({0, 0}), 0, 0);
   for (auto _ : state) benchmark::DoNotOptimize(square_to_cosine_hemisphere(sampler->next_2d()));
 }

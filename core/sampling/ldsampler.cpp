@@ -34,21 +34,23 @@ class LowDiscrepancySampler final : public Sampler {
     // Indices past 2^32 continue in a sequence scrambled apart.
     base_ = mix_bits(mix_bits(key.key ^ mix_bits(uint64_t(key.stream) * 0xd1b54a32d192ed03ULL)) ^
                      mix_bits(seed + uint64_t(seed_)) ^ mix_bits((sample_index >> 32) + 0x9e3779b97f4a7c15ULL));
-    index_ = uint32_t(sample_index);
+    reversed_index_ = reverse_bits(uint32_t(sample_index));
     dimension_ = 0;
   }
 
+  // The index shuffled, then each coordinate scrambled; everything stays
+  // bit-reversed until the value is read.
   float next_1d() override {
     const uint64_t h = dimension_hash();
-    const uint32_t i = owen_scramble(index_, uint32_t(h));
-    return to_unit(owen_scramble(sobol_first(i), uint32_t(h >> 32)));
+    const uint32_t i = reverse_bits(owen_scramble_reversed(reversed_index_, uint32_t(h)));
+    return to_unit(reverse_bits(owen_scramble_reversed(sobol_first_reversed(i), uint32_t(h >> 32))));
   }
 
   Vec2 next_2d() override {
     const uint64_t h = dimension_hash(), h2 = mix_bits(h);
-    const uint32_t i = owen_scramble(index_, uint32_t(h));
-    return {to_unit(owen_scramble(sobol_first(i), uint32_t(h >> 32))),
-            to_unit(owen_scramble(sobol_second(i), uint32_t(h2)))};
+    const uint32_t i = reverse_bits(owen_scramble_reversed(reversed_index_, uint32_t(h)));
+    return {to_unit(reverse_bits(owen_scramble_reversed(sobol_first_reversed(i), uint32_t(h >> 32)))),
+            to_unit(reverse_bits(owen_scramble_reversed(sobol_second_reversed(i), uint32_t(h2))))};
   }
 
  private:
@@ -63,7 +65,7 @@ class LowDiscrepancySampler final : public Sampler {
 
   int64_t seed_;
   uint64_t base_ = 0, dimension_ = 0;
-  uint32_t index_ = 0;
+  uint32_t reversed_index_ = 0;
 };
 
 }  // namespace
