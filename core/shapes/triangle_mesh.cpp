@@ -70,38 +70,49 @@ Bounds3 TriangleMesh::bounds() const {
   return b;
 }
 
-SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const RayHit& hit) const {
-  const uint32_t i0 = mesh_.indices[3 * hit.prim], i1 = mesh_.indices[3 * hit.prim + 1],
-                 i2 = mesh_.indices[3 * hit.prim + 2];
+TriangleMesh::SurfacePoint TriangleMesh::point_at(unsigned prim, float b1, float b2) const {
+  const uint32_t i0 = mesh_.indices[3 * prim], i1 = mesh_.indices[3 * prim + 1], i2 = mesh_.indices[3 * prim + 2];
   const Vec3 p0 = mesh_.positions[i0], p1 = mesh_.positions[i1], p2 = mesh_.positions[i2];
-  const float b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1 - b1 - b2;
+  const float b0 = 1 - b1 - b2;
 
-  SurfaceInteraction si;
+  SurfacePoint sp;
   // The point is interpolated from the vertices rather than taken as o + t d:
   // its error then depends only on the vertices, not on the ray's length.
   // The bound has an isotropic part too: Embree intersects relative to the
   // vertices, so a ray leaving a point exactly on an axis-aligned plane
   // (where the interpolation is exact) still needs to clear Embree's own
   // rounding, which scales with the vertex coordinates.
-  si.p = p0 * b0 + p1 * b1 + p2 * b2;
+  sp.p = p0 * b0 + p1 * b1 + p2 * b2;
   const float magnitude = max_component(max(max(abs(p0), abs(p1)), abs(p2)));
-  si.p_error = max((abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7), Vec3(1, 1, 1) * (magnitude * gamma(7)));
-  si.t = hit.t;
-  si.shape = this;
-  Vec3 ng = normalize(cross(p1 - p0, p2 - p0));
-  if (flip_normals_) ng = -ng;
-  Vec3 ns = ng;
+  sp.p_error = max((abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7), Vec3(1, 1, 1) * (magnitude * gamma(7)));
+  sp.ng = normalize(cross(p1 - p0, p2 - p0));
+  if (flip_normals_) sp.ng = -sp.ng;
+  sp.ns = sp.ng;
   if (!mesh_.normals.empty()) {
     const Vec3 interpolated = mesh_.normals[i0] * b0 + mesh_.normals[i1] * b1 + mesh_.normals[i2] * b2;
     if (squared_length(interpolated) > 0) {
-      ns = normalize(interpolated);
-      if (flip_normals_) ns = -ns;
-      ng = face_forward(ng, ns);
+      sp.ns = normalize(interpolated);
+      if (flip_normals_) sp.ns = -sp.ns;
+      sp.ng = face_forward(sp.ng, sp.ns);
     }
   }
-  si.ng = ng;
-  si.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[i0] * b0 + mesh_.uvs[i1] * b1 + mesh_.uvs[i2] * b2;
+  sp.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[i0] * b0 + mesh_.uvs[i1] * b1 + mesh_.uvs[i2] * b2;
+  return sp;
+}
+
+SurfaceInteraction TriangleMesh::interaction(const Ray&, const RayHit& hit) const {
+  const SurfacePoint sp = point_at(hit.prim, hit.uv.x, hit.uv.y);
+  SurfaceInteraction si;
+  si.p = sp.p;
+  si.p_error = sp.p_error;
+  si.t = hit.t;
+  si.shape = this;
+  si.ng = sp.ng;
+  si.uv = sp.uv;
   // Tangents from the uv parametrisation (barycentric when there are no uvs).
+  const uint32_t i0 = mesh_.indices[3 * hit.prim], i1 = mesh_.indices[3 * hit.prim + 1],
+                 i2 = mesh_.indices[3 * hit.prim + 2];
+  const Vec3 p0 = mesh_.positions[i0], p1 = mesh_.positions[i1], p2 = mesh_.positions[i2];
   const Vec2 uv0 = mesh_.uvs.empty() ? Vec2(0, 0) : mesh_.uvs[i0], uv1 = mesh_.uvs.empty() ? Vec2(1, 0) : mesh_.uvs[i1],
              uv2 = mesh_.uvs.empty() ? Vec2(0, 1) : mesh_.uvs[i2];
   const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
@@ -114,8 +125,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, const RayHit& hit) 
     si.dpdu = p1 - p0;
     si.dpdv = p2 - p0;
   }
-  si.shading = Frame::from_normal_and_tangent(ns, si.dpdu);
-  (void)ray;
+  si.shading = Frame::from_normal_and_tangent(sp.ns, si.dpdu);
   return si;
 }
 
@@ -124,9 +134,9 @@ PositionSample TriangleMesh::sample_position(Vec2 u) const {
   float u_reused = 0;
   const size_t tri = area_distribution_->sample(u.x, nullptr, &u_reused);
   const Vec2 b = square_to_uniform_triangle({u_reused, u.y});
-  RayHit hit{0, unsigned(tri), 0, {b.y, 1 - b.x - b.y}};
-  const SurfaceInteraction si = interaction(Ray{}, hit);
-  return {si.p, si.p_error, si.ng, si.uv, 1 / area_};
+  // Only the point, its error, normal and uv: no tangents or shading frame.
+  const SurfacePoint sp = point_at(unsigned(tri), b.y, 1 - b.x - b.y);
+  return {sp.p, sp.p_error, sp.ng, sp.uv, 1 / area_};
 }
 
 }  // namespace caustica

@@ -41,6 +41,15 @@ class TriangleMesh : public Shape {
   size_t collapsed_triangles() const { return collapsed_; }
 
  private:
+  // A point at barycentrics (b1, b2) of triangle `prim`: position and its
+  // error bound, the geometric normal (flipped with the mesh, facing the
+  // interpolated one) and the shading normal, uv.
+  struct SurfacePoint {
+    Vec3 p, p_error, ng, ns;
+    Vec2 uv;
+  };
+  SurfacePoint point_at(unsigned prim, float b1, float b2) const;
+
   MeshData mesh_;
   bool flip_normals_;
   std::string kind_;
