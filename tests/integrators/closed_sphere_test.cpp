@@ -103,24 +103,28 @@ TEST(ClosedSphere, HighAlbedoStaysUnbiased) {
   EXPECT_LT(std::abs(m.mean - 5.0) / m.standard_error, kZCritical) << m.mean << " +- " << m.standard_error;
 }
 
-// The furnace crossed with the low-discrepancy sampler: every integrator
+// The furnace crossed with the stratifying samplers: every integrator
 // stays unbiased. Independent runs give the standard errors (a stratified
 // pixel's sample spread overstates its error).
-TEST(ClosedSphere, EveryIntegratorIsUnbiasedWithLowDiscrepancySamples) {
+TEST(ClosedSphere, EveryIntegratorIsUnbiasedWithStratifyingSamplers) {
   const std::pair<const char*, double> cases[] = {{"<integrator type='path'/>", 2.0},
                                                   {"<integrator type='direct'/>", 1.5},
                                                   {"<integrator type='ptracer'/>", 2.0},
                                                   {"<integrator type='bdpt'/>", 2.0}};
   constexpr int kRuns = 12;
-  const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(cases))), kRuns - 1);
+  const char* const samplers[] = {"ldsampler", "stratified"};
+  const double t_critical =
+      test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(cases) * std::size(samplers))), kRuns - 1);
   uint64_t seed = 300;
-  for (const auto& [integrator, expected] : cases) {
-    const auto scene = test::scene_from_xml(sphere_scene(integrator, 1.0f, 0.5f, "ldsampler"));
-    const auto region = test::estimate_regions(scene, {{{0, 0}, {24, 24}}}, 16, kRuns, seed += kRuns)[0];
-    const double rounding = 1e-5 * expected;
-    EXPECT_LT(std::abs(region.mean - expected), t_critical * std::hypot(region.standard_error, rounding))
-        << integrator << ": " << region.mean << " +- " << region.standard_error << ", expected " << expected;
-  }
+  for (const char* sampler : samplers)
+    for (const auto& [integrator, expected] : cases) {
+      const auto scene = test::scene_from_xml(sphere_scene(integrator, 1.0f, 0.5f, sampler));
+      const auto region = test::estimate_regions(scene, {{{0, 0}, {24, 24}}}, 16, kRuns, seed += kRuns)[0];
+      const double rounding = 1e-5 * expected;
+      EXPECT_LT(std::abs(region.mean - expected), t_critical * std::hypot(region.standard_error, rounding))
+          << sampler << ", " << integrator << ": " << region.mean << " +- " << region.standard_error << ", expected "
+          << expected;
+    }
 }
 
 TEST(ClosedSphere, LightTracingAndBidirectionalAreUnbiased) {

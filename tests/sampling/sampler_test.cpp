@@ -203,7 +203,7 @@ TEST_P(EverySampler, DimensionsAndNeighbouringPixelsAreUncorrelated) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Samplers, EverySampler, testing::Values("independent", "ldsampler"),
+INSTANTIATE_TEST_SUITE_P(Samplers, EverySampler, testing::Values("independent", "ldsampler", "stratified"),
                          [](const testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace
