@@ -17,7 +17,8 @@ constexpr uint64_t kDimensionsPerSample = uint64_t(1) << 20;
 
 class IndependentSampler final : public Sampler {
  public:
-  explicit IndependentSampler(const Properties& props) : Sampler(sample_count(props)), seed_(props.get_int("seed")) {}
+  explicit IndependentSampler(const Properties& props)
+      : Sampler(read_sample_count(props)), seed_(props.get_int("seed")) {}
   IndependentSampler(const IndependentSampler&) = default;
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
@@ -38,12 +39,6 @@ class IndependentSampler final : public Sampler {
   }
 
  private:
-  static uint32_t sample_count(const Properties& props) {
-    const int64_t n = props.get_int("sample_count");
-    if (n <= 0 || n > (int64_t(1) << 32) - 1) throw props.error("sample_count", "must be a positive 32-bit count");
-    return uint32_t(n);
-  }
-
   int64_t seed_;
   Pcg32 rng_;
 };

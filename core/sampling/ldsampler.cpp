@@ -13,8 +13,7 @@
 
 #include "core/registry/properties.h"
 #include "core/sampling/owen_scramble.h"
-#include "core/sampling/pcg32.h"
-#include "core/sampling/sampler.h"
+#include "core/sampling/sample_hash.h"
 
 namespace caustica {
 namespace {
@@ -25,15 +24,14 @@ float to_unit(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 class LowDiscrepancySampler final : public Sampler {
  public:
   explicit LowDiscrepancySampler(const Properties& props)
-      : Sampler(sample_count(props)), seed_(props.get_int("seed")) {}
+      : Sampler(read_sample_count(props)), seed_(props.get_int("seed")) {}
   LowDiscrepancySampler(const LowDiscrepancySampler&) = default;
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<LowDiscrepancySampler>(*this); }
 
   void start_sample(SampleKey key, uint64_t sample_index, uint64_t seed) override {
     // Indices past 2^32 continue in a sequence scrambled apart.
-    base_ = mix_bits(mix_bits(key.key ^ mix_bits(uint64_t(key.stream) * 0xd1b54a32d192ed03ULL)) ^
-                     mix_bits(seed + uint64_t(seed_)) ^ mix_bits((sample_index >> 32) + 0x9e3779b97f4a7c15ULL));
+    base_ = sample_hash(key, seed + uint64_t(seed_), sample_index >> 32);
     reversed_index_ = reverse_bits(uint32_t(sample_index));
     dimension_ = 0;
   }
@@ -41,28 +39,19 @@ class LowDiscrepancySampler final : public Sampler {
   // The index shuffled, then each coordinate scrambled; everything stays
   // bit-reversed until the value is read.
   float next_1d() override {
-    const uint64_t h = dimension_hash();
+    const uint64_t h = dimension_hash(base_, ++dimension_);
     const uint32_t i = reverse_bits(owen_scramble_reversed(reversed_index_, uint32_t(h)));
     return to_unit(reverse_bits(owen_scramble_reversed(sobol_first_reversed(i), uint32_t(h >> 32))));
   }
 
   Vec2 next_2d() override {
-    const uint64_t h = dimension_hash(), h2 = mix_bits(h);
+    const uint64_t h = dimension_hash(base_, ++dimension_), h2 = mix_bits(h);
     const uint32_t i = reverse_bits(owen_scramble_reversed(reversed_index_, uint32_t(h)));
     return {to_unit(reverse_bits(owen_scramble_reversed(sobol_first_reversed(i), uint32_t(h >> 32)))),
             to_unit(reverse_bits(owen_scramble_reversed(sobol_second_reversed(i), uint32_t(h2))))};
   }
 
  private:
-  static uint32_t sample_count(const Properties& props) {
-    const int64_t n = props.get_int("sample_count");
-    if (n <= 0 || n > (int64_t(1) << 32) - 1) throw props.error("sample_count", "must be a positive 32-bit count");
-    return uint32_t(n);
-  }
-
-  // The scrambles of the next dimension (or pair), which it then consumes.
-  uint64_t dimension_hash() { return mix_bits(base_ ^ mix_bits(++dimension_ * 0x9e3779b97f4a7c15ULL)); }
-
   int64_t seed_;
   uint64_t base_ = 0, dimension_ = 0;
   uint32_t reversed_index_ = 0;

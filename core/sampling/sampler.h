@@ -8,6 +8,8 @@
 
 namespace caustica {
 
+class Properties;
+
 // The independent families of samples a render draws. Each stream has its
 // own keys: a camera sample and a light path are keyed by their pixel, a
 // photon by its round.
@@ -47,5 +49,8 @@ class Sampler : public Plugin {
  private:
   uint32_t sample_count_;
 };
+
+// The sample_count parameter every sampler declares: a positive 32-bit count.
+uint32_t read_sample_count(const Properties& props);
 
 }  // namespace caustica

@@ -16,8 +16,7 @@
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
-#include "core/sampling/pcg32.h"
-#include "core/sampling/sampler.h"
+#include "core/sampling/sample_hash.h"
 
 namespace caustica {
 namespace {
@@ -44,35 +43,36 @@ float unit(uint64_t h) { return float(h >> 40) * 0x1p-24f; }
 class StratifiedSampler final : public Sampler {
  public:
   explicit StratifiedSampler(const Properties& props)
-      : Sampler(sample_count(props)), seed_(props.get_int("seed")), jitter_(props.get_bool("jitter")) {}
+      : Sampler(block_size(props)), seed_(props.get_int("seed")), jitter_(props.get_bool("jitter")) {}
   StratifiedSampler(const StratifiedSampler&) = default;
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<StratifiedSampler>(*this); }
 
   void start_sample(SampleKey key, uint64_t sample_index, uint64_t seed) override {
-    side_ = uint32_t(std::ceil(std::sqrt(double(Sampler::sample_count()))));
+    side_ = uint32_t(std::ceil(std::sqrt(double(sample_count()))));
     const uint64_t n = uint64_t(side_) * side_;
-    base_ = mix_bits(mix_bits(key.key ^ mix_bits(uint64_t(key.stream) * 0xd1b54a32d192ed03ULL)) ^
-                     mix_bits(seed + uint64_t(seed_)) ^ mix_bits(sample_index / n + 0x9e3779b97f4a7c15ULL));
+    base_ = sample_hash(key, seed + uint64_t(seed_), sample_index / n);
     within_ = uint32_t(sample_index % n);
     dimension_ = 0;
   }
 
   float next_1d() override {
-    const uint64_t h = dimension_hash();
+    const uint64_t h = dimension_hash(base_, ++dimension_);
     const uint32_t n = side_ * side_;
     return std::min((float(permute(within_, n, uint32_t(h))) + jitter(h, 0)) / float(n), kOneMinusEpsilon);
   }
 
   Vec2 next_2d() override {
-    const uint64_t h = dimension_hash();
+    const uint64_t h = dimension_hash(base_, ++dimension_);
     const uint32_t cell = permute(within_, side_ * side_, uint32_t(h));
     return {std::min((float(cell % side_) + jitter(h, 1)) / float(side_), kOneMinusEpsilon),
             std::min((float(cell / side_) + jitter(h, 2)) / float(side_), kOneMinusEpsilon)};
   }
 
  private:
-  static uint32_t sample_count(const Properties& props) {
+  // sample_count with a lower bound than other samplers': its square
+  // rounded up must fit 32 bits.
+  static uint32_t block_size(const Properties& props) {
     const int64_t n = props.get_int("sample_count");
     if (n <= 0 || n > (int64_t(1) << 30)) throw props.error("sample_count", "must be between 1 and 2^30");
     return uint32_t(n);
@@ -82,8 +82,6 @@ class StratifiedSampler final : public Sampler {
   float jitter(uint64_t h, uint64_t axis) const {
     return jitter_ ? unit(mix_bits(h ^ mix_bits((uint64_t(within_) << 2 | axis) + 0x632be59bd9b4e019ULL))) : 0.5f;
   }
-
-  uint64_t dimension_hash() { return mix_bits(base_ ^ mix_bits(++dimension_ * 0x9e3779b97f4a7c15ULL)); }
 
   int64_t seed_;
   bool jitter_;
