@@ -26,10 +26,11 @@ class Caustica:
     def render(self, scene, output, *, integrator, spp, seed, res):
         """Renders a float EXR (and its PNG); returns the EXR's metadata.
 
-        `integrator` may name a sampler after an '@' (path@ldsampler), which the scene takes as $sampler.
+        `integrator` may name a sampler after an '@' (path@ldsampler), which the scene takes as $sampler, with
+        its sample_count ($spp) the run's: the stratifying samplers stratify the whole run, not blocks of it.
         """
         name, _, sampler = integrator.partition("@")
-        defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}"] if sampler else [])
+        defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}", "-D", f"spp={spp}"] if sampler else [])
         self._run(["render", scene, "-o", output, "--integrator", name, "--spp", spp, "--seed", seed, *defines,
                    "--threads", self.threads, "--exr-format", "float", "-q"])
         return read_metadata(output)

@@ -9,9 +9,12 @@
 namespace caustica {
 namespace {
 
+// At 64 samples per pixel, the Cornell scenes' default.
 std::unique_ptr<Sampler> make_sampler(const char* name) {
   const PluginInfo* info = Registry::instance().find("sampler", name);
-  return std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"bench", 0})))->clone();
+  Properties props(*info, {"bench", 0});
+  props.set("sample_count", {ValueKind::Integer, int64_t(64), {"bench", 0}});
+  return std::dynamic_pointer_cast<Sampler>(info->create(props))->clone();
 }
 
 void BM_StartSample(benchmark::State& state, const char* name) {
@@ -25,6 +28,9 @@ void BM_StartSample(benchmark::State& state, const char* name) {
 }
 BENCHMARK_CAPTURE(BM_StartSample, independent, "independent");
 BENCHMARK_CAPTURE(BM_StartSample, ldsampler, "ldsampler");
+BENCHMARK_CAPTURE(BM_StartSample, stratified, "stratified");
+BENCHMARK_CAPTURE(BM_StartSample, multijitter, "multijitter");
+BENCHMARK_CAPTURE(BM_StartSample, halton, "halton");
 
 // A sample's first 32 draws, as a path of a few bounces makes them.
 void BM_Next1D(benchmark::State& state, const char* name) {
@@ -38,6 +44,9 @@ void BM_Next1D(benchmark::State& state, const char* name) {
 }
 BENCHMARK_CAPTURE(BM_Next1D, independent, "independent");
 BENCHMARK_CAPTURE(BM_Next1D, ldsampler, "ldsampler");
+BENCHMARK_CAPTURE(BM_Next1D, stratified, "stratified");
+BENCHMARK_CAPTURE(BM_Next1D, multijitter, "multijitter");
+BENCHMARK_CAPTURE(BM_Next1D, halton, "halton");
 
 void BM_Next2D(benchmark::State& state, const char* name) {
   auto sampler = make_sampler(name);
@@ -50,6 +59,9 @@ void BM_Next2D(benchmark::State& state, const char* name) {
 }
 BENCHMARK_CAPTURE(BM_Next2D, independent, "independent");
 BENCHMARK_CAPTURE(BM_Next2D, ldsampler, "ldsampler");
+BENCHMARK_CAPTURE(BM_Next2D, stratified, "stratified");
+BENCHMARK_CAPTURE(BM_Next2D, multijitter, "multijitter");
+BENCHMARK_CAPTURE(BM_Next2D, halton, "halton");
 
 void BM_CosineHemisphere(benchmark::State& state) {
   auto sampler = make_sampler("independent");

@@ -13,7 +13,7 @@ INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=
 # Every integrator runs with each sampler; a run is named INTEGRATOR@SAMPLER
 # for every sampler but the first (the scenes' default), which keeps the
 # integrator's plain name.
-SAMPLERS = ["independent", "ldsampler"]
+SAMPLERS = ["independent", "ldsampler", "stratified", "multijitter", "halton"]
 
 
 def runs(integrators, samplers):

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bit>
 #include <cstdint>
 
 #include "core/sampling/pcg32.h"
@@ -18,5 +19,30 @@ inline uint64_t sample_hash(SampleKey key, uint64_t seed, uint64_t block) {
 inline uint64_t dimension_hash(uint64_t sample, uint64_t dimension) {
   return mix_bits(sample ^ mix_bits(dimension * 0x9e3779b97f4a7c15ULL));
 }
+
+// A bijection on [0, n) chosen by `seed`: an invertible hash of the low
+// half on the smallest power of two holding n, walked along its cycle
+// until it lands below n, then rotated by an offset from the high half.
+// The rotation sends every i to each of [0, n) equally often over seeds: a
+// cycle walk alone favours some images when n is not a power of two, which
+// biases a stratified estimate and correlates neighbouring pixels' samples.
+inline uint32_t hashed_permutation(uint32_t i, uint32_t n, uint64_t seed64) {
+  const uint32_t seed = uint32_t(seed64);
+  uint32_t mask = n - 1;
+  for (int s = 1; s < 32; s *= 2) mask |= mask >> s;
+  const int half = (std::bit_width(mask) + 1) / 2;
+  do {
+    i = (i ^ seed) & mask;
+    i = (i * 0x9e3779b1u + (seed >> 16)) & mask;
+    i ^= i >> half;
+    i = (i * 0x85ebca77u) & mask;
+    i ^= i >> half;
+  } while (i >= n);
+  i += uint32_t(((seed64 >> 32) * n) >> 32);
+  return i >= n ? i - n : i;
+}
+
+// A uniform float in [0, 1) from a hash's top 24 bits.
+inline float unit_from_hash(uint64_t h) { return float(h >> 40) * 0x1p-24f; }
 
 }  // namespace caustica

@@ -44,7 +44,6 @@ class Sampler : public Plugin {
   virtual Vec2 next_2d() = 0;
 
   uint32_t sample_count() const { return sample_count_; }
-  void set_sample_count(uint32_t n) { sample_count_ = n; }
 
  private:
   uint32_t sample_count_;

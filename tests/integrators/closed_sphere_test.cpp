@@ -112,7 +112,7 @@ TEST(ClosedSphere, EveryIntegratorIsUnbiasedWithStratifyingSamplers) {
                                                   {"<integrator type='ptracer'/>", 2.0},
                                                   {"<integrator type='bdpt'/>", 2.0}};
   constexpr int kRuns = 12;
-  const char* const samplers[] = {"ldsampler", "stratified"};
+  const char* const samplers[] = {"ldsampler", "stratified", "multijitter", "halton"};
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.001, int(std::size(cases) * std::size(samplers))), kRuns - 1);
   uint64_t seed = 300;

@@ -86,7 +86,7 @@ double largest_difference(const Image& a, const Image& b, bool* identical) {
 // another order than in one render, so in general the merge is exact only
 // up to that order; in float images it is exact here.
 TEST(RenderJob, DisjointSampleRangesMergeIntoTheRenderOfTheirUnion) {
-  for (const char* sampler : {"independent", "ldsampler", "stratified"})
+  for (const char* sampler : {"independent", "ldsampler", "stratified", "multijitter", "halton"})
     for (const char* integrator : {"path", "photon:photons=3000", "bdpt", "ptracer"}) {
       const auto scene = load_scene(kGlass, {{"res", "24"}, {"sampler", sampler}});
       const RenderFile whole = render_range(scene, integrator, 0, 21);

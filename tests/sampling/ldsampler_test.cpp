@@ -14,21 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "core/registry/properties.h"
 #include "core/sampling/sampler.h"
 #include "tests/support/chi2.h"
+#include "tests/support/samplers.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
 
 namespace caustica {
 namespace {
-
-std::unique_ptr<Sampler> make_sampler(const std::string& name, int64_t seed = 0) {
-  const PluginInfo* info = Registry::instance().find("sampler", name);
-  Properties props(*info, {"test", 1});
-  props.set("seed", {ValueKind::Integer, seed, {"test", 1}});
-  return std::dynamic_pointer_cast<Sampler>(info->create(props))->clone();
-}
 
 // One sample's draws in the order a path might make them: 1-D, 2-D, 1-D, 2-D, 1-D, 2-D.
 struct Draws {
@@ -47,7 +40,7 @@ Draws draw(Sampler& s, SampleKey key, uint64_t index, uint64_t seed) {
 }
 
 TEST(LowDiscrepancySampler, EveryAlignedBlockIsAnElementaryNet) {
-  auto s = make_sampler("ldsampler", 3);
+  auto s = test::make_sampler("ldsampler", {{"seed", 3}});
   for (const SampleKey key : {SampleKey::camera({0, 0}), SampleKey::camera({5, 9}), SampleKey::light_path({5, 9}),
                               SampleKey::photon_round(7)})
     for (const int m : {4, 7, 10}) {
@@ -76,7 +69,7 @@ TEST(LowDiscrepancySampler, EveryAlignedBlockIsAnElementaryNet) {
 // Values of different dimensions, paired across pairs, fill the square
 // uniformly over many pixels: 16 x 16 bins.
 TEST(LowDiscrepancySampler, ProjectionsAcrossPairsAreUniform) {
-  auto s = make_sampler("ldsampler");
+  auto s = test::make_sampler("ldsampler");
   constexpr int kBins = 16;
   const auto bin = [](float u, float v) { return size_t(int(u * kBins) * kBins + int(v * kBins)); };
   std::vector<std::vector<double>> observed(4, std::vector<double>(kBins * kBins, 0));
@@ -106,7 +99,7 @@ TEST(LowDiscrepancySampler, SmoothIntegrandsConvergeFasterWithoutBias) {
   double rms[2];
   int which = 0;
   for (const char* name : {"independent", "ldsampler"}) {
-    auto s = make_sampler(name);
+    auto s = test::make_sampler(name);
     double sum = 0, sum2 = 0;
     constexpr int kPixels = 1024, kSamples = 256;
     for (int p = 0; p < kPixels; ++p) {

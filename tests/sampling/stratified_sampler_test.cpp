@@ -11,24 +11,16 @@
 #include <string>
 #include <vector>
 
-#include "core/registry/properties.h"
 #include "core/sampling/sampler.h"
+#include "tests/support/samplers.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
 namespace {
 
-std::unique_ptr<Sampler> stratified(int64_t sample_count, bool jitter = true) {
-  const PluginInfo* info = Registry::instance().find("sampler", "stratified");
-  Properties props(*info, {"test", 1});
-  props.set("sample_count", {ValueKind::Integer, sample_count, {"test", 1}});
-  props.set("jitter", {ValueKind::Boolean, jitter, {"test", 1}});
-  return std::dynamic_pointer_cast<Sampler>(info->create(props))->clone();
-}
-
 TEST(StratifiedSampler, EveryBlockStratifiesEveryDimension) {
   for (const auto& [count, side] : {std::pair{16, 4}, std::pair{10, 4}, std::pair{9, 3}, std::pair{1, 1}}) {
-    auto s = stratified(count);
+    auto s = test::make_sampler("stratified", {{"sample_count", int64_t(count)}});
     const int n = side * side;
     for (const SampleKey key : {SampleKey::camera({2, 7}), SampleKey::light_path({2, 7}), SampleKey::photon_round(5)})
       for (const uint64_t first : {uint64_t(0), uint64_t(3 * n)}) {
@@ -51,7 +43,7 @@ TEST(StratifiedSampler, EveryBlockStratifiesEveryDimension) {
 }
 
 TEST(StratifiedSampler, WithoutJitterSamplesSitAtTheStrataCentres) {
-  auto s = stratified(16, false);
+  auto s = test::make_sampler("stratified", {{"sample_count", int64_t(16)}, {"jitter", false}});
   for (uint64_t i = 0; i < 16; ++i) {
     s->start_sample(SampleKey::camera({1, 1}), i, 0);
     const float a = s->next_1d() * 16 - 0.5f;
