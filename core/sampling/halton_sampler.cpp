@@ -38,19 +38,23 @@ struct Base {
   uint32_t remainder(uint32_t n) const { return uint32_t((unsigned __int128)(reciprocal * n) * prime >> 64); }
 };
 
+// By a sieve, which stays within clang's constexpr step limit where trial
+// division does not; the 1024th prime is 8161.
 constexpr std::array<Base, kPrimeCount> first_primes() {
+  constexpr uint32_t kLimit = 8192;
+  std::array<bool, kLimit> composite{};
   std::array<Base, kPrimeCount> bases{};
   int found = 0;
-  for (uint32_t candidate = 2; found < kPrimeCount; ++candidate) {
-    bool prime = true;
-    for (int i = 0; i < found && bases[i].prime * bases[i].prime <= candidate; ++i)
-      if (candidate % bases[i].prime == 0) prime = false;
-    if (prime) bases[found++] = {candidate, ~uint64_t(0) / candidate + 1};
+  for (uint32_t n = 2; n < kLimit && found < kPrimeCount; ++n) {
+    if (composite[n]) continue;
+    bases[found++] = {n, ~uint64_t(0) / n + 1};
+    for (uint32_t multiple = n * n; multiple < kLimit; multiple += n) composite[multiple] = true;
   }
   return bases;
 }
 
 constexpr std::array<Base, kPrimeCount> kBases = first_primes();
+static_assert(kBases[kPrimeCount - 1].prime == 8161);
 
 // The radical inverse of `index` in `base`, its digits resolved until
 // base^k reaches `resolved`, each permuted by a hash of `h` and the digits
