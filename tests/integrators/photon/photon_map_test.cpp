@@ -41,6 +41,39 @@ TEST(PhotonMap, RadiusQueryFindsExactlyThePhotonsWithinReach) {
   }
 }
 
+// Smaller radii than the map's (sppm's pixels), photons on shells just
+// inside and outside the query sphere, where a cell culled by its distance
+// from the query would lose them, near the origin and 10^4 radii from it.
+TEST(PhotonMap, SmallerRadiiAndPhotonsAtTheSphereFindExactlyThoseWithinReach) {
+  const float radius = 0.4f;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1, 1), shell(0.98f, 1.02f);
+  for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{4e3f, -4e3f, 4e3f}})
+    for (const float r : {radius, 0.5f * radius, 0.1f * radius}) {
+      std::vector<Vec3> queries;
+      std::vector<Photon> photons;
+      for (int q = 0; q < 40; ++q) {
+        queries.push_back(offset + Vec3{u(rng), u(rng), u(rng)});
+        for (int k = 0; k < 50; ++k) {
+          const Vec3 d = normalize(Vec3{u(rng), u(rng), u(rng)});
+          Photon ph;
+          ph.p = queries.back() + d * (r * shell(rng));
+          ph.depth = uint32_t(photons.size());
+          photons.push_back(ph);
+        }
+      }
+      const PhotonMap map(photons, radius);
+      for (const Vec3 p : queries) {
+        std::vector<uint32_t> expected, found;
+        for (const Photon& ph : photons)
+          if (squared_length(ph.p - p) <= r * r) expected.push_back(ph.depth);
+        map.for_each_within(p, r, [&](const Photon& ph) { found.push_back(ph.depth); });
+        std::sort(found.begin(), found.end());
+        EXPECT_EQ(found, expected) << "radius " << r << ", offset " << offset.x;
+      }
+    }
+}
+
 TEST(PhotonMap, EmptyMapAndNegativeCoordinates) {
   const PhotonMap empty(std::vector<Photon>{}, 1.0f);
   int calls = 0;
