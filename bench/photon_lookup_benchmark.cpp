@@ -17,7 +17,9 @@ const std::vector<Photon>& caustic_photons() {
   static const std::vector<Photon> photons = [] {
     const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "8"}});
-    return *trace_photons(*scene, PhotonPaths::Caustic, 1000000, 0, 1, PathSettings{});
+    TracedPhotons traced;
+    trace_photons(*scene, PhotonPaths::Caustic, 1000000, 0, 1, PathSettings{}, traced);
+    return traced.all;
   }();
   return photons;
 }

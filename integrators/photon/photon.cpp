@@ -78,6 +78,7 @@ class CausticRounds final : public PixelEstimator {
   float initial_radius_;
   std::optional<uint32_t> round_;
   uint32_t rounds_ = 0;
+  TracedPhotons traced_;  // kept between rounds, so that its memory is reused
   PhotonMap map_;
   std::optional<CausticGather> gather_;
 };
@@ -124,11 +125,11 @@ uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(se
 bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
   if (!enabled_ || round_ == pass) return true;
   const uint64_t photons = uint64_t(settings_.photon_.photons);
-  auto traced = trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, stop);
-  if (!traced) return false;
+  if (!trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, traced_, stop))
+    return false;
   round_ = pass;
   ++rounds_;
-  map_ = PhotonMap(std::move(*traced), round_radius(settings_.photon_, initial_radius_, pass));
+  map_.build(traced_.all, round_radius(settings_.photon_, initial_radius_, pass));
   gather_.emplace(map_, photons, settings_.settings_.max_depth);
   return true;
 }

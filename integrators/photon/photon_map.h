@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/math/color.h"
@@ -29,7 +30,9 @@ struct Photon {
 class PhotonMap {
  public:
   PhotonMap() = default;
-  PhotonMap(std::vector<Photon> photons, float radius);
+  PhotonMap(std::span<const Photon> photons, float radius) { build(photons, radius); }
+  // Replaces the map's photons, reusing its memory.
+  void build(std::span<const Photon> photons, float radius);
 
   float radius() const { return radius_; }
   size_t size() const { return photons_.size(); }
@@ -100,8 +103,9 @@ class PhotonMap {
     return h & mask_;
   }
 
-  std::vector<Photon> photons_;  // grouped by bucket
-  std::vector<uint32_t> start_;  // photons of bucket b: [start_[b], start_[b + 1])
+  std::vector<Photon> photons_;             // grouped by bucket
+  std::vector<uint32_t> start_;             // photons of bucket b: [start_[b], start_[b + 1])
+  std::vector<uint32_t> bucket_of_, next_;  // scratch of build(), kept for the next
   float radius_ = 0, inv_cell_ = 0;
   uint32_t mask_ = 0;
 };

@@ -47,12 +47,13 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const 
 
 }  // namespace
 
-std::optional<std::vector<Photon>> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round,
-                                                 uint64_t seed, const PathSettings& settings,
-                                                 const std::atomic<bool>* stop) {
+bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
+                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop) {
   const auto stopped = [&] { return stop && stop->load(); };
   const size_t blocks = size_t((count + kBlock - 1) / kBlock);
-  std::vector<std::vector<Photon>> found(blocks);
+  std::vector<std::vector<Photon>>& found = out.blocks;
+  found.resize(blocks);
+  for (auto& f : found) f.clear();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     if (stopped()) return;
     auto sampler = scene.sensor().sampler()->clone();
@@ -61,10 +62,10 @@ std::optional<std::vector<Photon>> trace_photons(const Scene& scene, PhotonPaths
       trace_photon(scene, kind, *sampler, settings, found[b]);
     }
   });
-  if (stopped()) return std::nullopt;
-  std::vector<Photon> photons;
-  for (const auto& f : found) photons.insert(photons.end(), f.begin(), f.end());
-  return photons;
+  if (stopped()) return false;
+  out.all.clear();
+  for (const auto& f : found) out.all.insert(out.all.end(), f.begin(), f.end());
+  return true;
 }
 
 }  // namespace caustica

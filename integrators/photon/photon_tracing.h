@@ -2,7 +2,6 @@
 
 #include <atomic>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "core/render/path_settings.h"
@@ -23,14 +22,22 @@ enum class PhotonPaths {
   Indirect,
 };
 
+// The photons of one round: blocks traced in parallel, then joined in
+// order. Kept from round to round, so that their memory is reused rather
+// than freed and faulted in again.
+struct TracedPhotons {
+  std::vector<std::vector<Photon>> blocks;
+  std::vector<Photon> all;
+};
+
 // Traces `count` photons from the emitters (chosen by power) and keeps the
 // kind asked for. Photon i of round `round` draws its random numbers from
 // (seed, round, i) and blocks of photons are joined in order, so the result
 // is the same for any thread count. Photons whose paths could not reach the
-// camera within settings.max_depth are not kept. Nothing, once `stop`
-// (may be null) turns true: a production-size round takes long.
-std::optional<std::vector<Photon>> trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round,
-                                                 uint64_t seed, const PathSettings& settings,
-                                                 const std::atomic<bool>* stop = nullptr);
+// camera within settings.max_depth are not kept. The photons land in
+// out.all; false, once `stop` (may be null) turns true: a production-size
+// round takes long.
+bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
+                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace caustica

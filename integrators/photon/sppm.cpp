@@ -112,6 +112,9 @@ class SppmPixels final : public IterationState {
   int width_;
   std::vector<PixelState> pixels_;
   uint64_t iterations_ = 0;
+  // Kept between iterations, so that their memory is reused.
+  TracedPhotons traced_;
+  PhotonMap map_;
 };
 
 class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
@@ -144,10 +147,11 @@ SppmPixels::SppmPixels(const StochasticProgressivePhotonMapping& settings, const
 bool SppmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   float max_radius = 0;
   for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
-  auto photons = trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration, seed_,
-                               settings_.settings_, stop);
-  if (!photons) return false;
-  const PhotonMap map(std::move(*photons), max_radius);
+  if (!trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration, seed_,
+                     settings_.settings_, traced_, stop))
+    return false;
+  map_.build(traced_.all, max_radius);
+  const PhotonMap& map = map_;
   const int height = int(pixels_.size() / size_t(width_));
   tbb::parallel_for(0, height, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();

@@ -74,6 +74,26 @@ TEST(PhotonMap, SmallerRadiiAndPhotonsAtTheSphereFindExactlyThoseWithinReach) {
     }
 }
 
+// A map rebuilt with other photons and another radius (as every round
+// does) answers as a fresh map of them: nothing of the last round stays.
+TEST(PhotonMap, RebuildingForgetsThePreviousPhotons) {
+  const auto first = random_photons(3000, 4, 2), second = random_photons(500, 5, 3);
+  PhotonMap reused(first, 0.5f);
+  reused.build(second, 0.3f);
+  const PhotonMap fresh(second, 0.3f);
+  EXPECT_EQ(reused.size(), second.size());
+  EXPECT_EQ(reused.radius(), 0.3f);
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<float> u(-3, 3);
+  for (int q = 0; q < 200; ++q) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    std::vector<uint32_t> a, b;
+    reused.for_each_within(p, [&](const Photon& ph) { a.push_back(ph.depth); });
+    fresh.for_each_within(p, [&](const Photon& ph) { b.push_back(ph.depth); });
+    EXPECT_EQ(a, b) << "query " << q;
+  }
+}
+
 TEST(PhotonMap, EmptyMapAndNegativeCoordinates) {
   const PhotonMap empty(std::vector<Photon>{}, 1.0f);
   int calls = 0;
