@@ -149,10 +149,10 @@ int RenderCommand::run() const {
 
   if (!quiet_) {
     std::printf(
-        "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s, %llu non-finite samples dropped%s "
-        "-> %s, %s\n",
+        "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s (the integrator's rays; the first-hit "
+        "layers' %.3g M rays apart), %llu non-finite samples dropped%s -> %s, %s\n",
         scene_.c_str(), job.integrator().describe().c_str(), image.width, image.height, stats.spp, stats.seconds,
-        stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6,
+        stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, double(stats.layer_rays) * 1e-6,
         static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "", exr.c_str(),
         png.c_str());
   }

@@ -65,9 +65,8 @@ std::vector<std::string> AovEvaluator::channels() const {
   return out;
 }
 
-void AovEvaluator::evaluate(const Scene& scene, const Ray& ray, std::span<float> out) const {
+void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& si, std::span<float> out) const {
   std::fill(out.begin(), out.end(), 0.0f);
-  const auto si = scene.intersect(ray);
   if (!si) return;
   size_t c = 0;
   const auto put = [&](Vec3 v, int n) {

@@ -1,14 +1,14 @@
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "core/geometry/interaction.h"
 #include "core/geometry/ray.h"
 
 namespace caustica {
-
-class Scene;
 
 enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth, Coverage };
 
@@ -31,7 +31,8 @@ class AovEvaluator {
   // name.A (coverage: 1 where the ray meets a surface, an alpha channel);
   // without a name, only the suffix ("A").
   std::vector<std::string> channels() const;
-  void evaluate(const Scene& scene, const Ray& ray, std::span<float> out) const;
+  // The values at `hit`, the first surface `ray` meets (none: zeros).
+  void evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& hit, std::span<float> out) const;
 
  private:
   std::vector<AovSpec> aovs_;

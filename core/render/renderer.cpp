@@ -15,7 +15,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
   tbb::task_arena arena(threads);
   const bool timed = options.time_limit > 0;
   const uint32_t target = timed ? 0 : (options.spp > 0 ? options.spp : scene.sensor().sampler()->sample_count());
-  const uint64_t rays_before = scene.rays_traced();
+  const uint64_t rays_before = scene.rays_traced(), layer_rays_before = scene.layer_rays_traced();
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
@@ -53,6 +53,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
   stats.spp = done;
   stats.samples = uint64_t(done) * film.width() * film.height();
   stats.rays = scene.rays_traced() - rays_before;
+  stats.layer_rays = scene.layer_rays_traced() - layer_rays_before;
   stats.dropped = film.dropped_samples();
   stats.first_dropped = film.first_dropped();
   stats.interrupted = stopped() && (timed || done < target);

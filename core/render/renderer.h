@@ -33,7 +33,9 @@ struct RenderProgress {
 struct RenderStats {
   double seconds = 0;
   uint32_t spp = 0;
-  uint64_t samples = 0, rays = 0;
+  uint64_t samples = 0;
+  uint64_t rays = 0;        // traced by the integrator
+  uint64_t layer_rays = 0;  // traced again for the first-hit layers
   uint64_t dropped = 0;
   SampleId first_dropped;
   bool interrupted = false;

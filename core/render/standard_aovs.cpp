@@ -27,7 +27,7 @@ void add_standard_aovs(const Scene& scene, const CameraSample& cs, SampleId id, 
                        std::vector<float>& scratch) {
   if (id.index >= kAovSamples) return;
   scratch.resize(aovs.channel_count());
-  standard_aovs(scene.sensor().film()->output().alpha).evaluate(scene, cs.ray, scratch);
+  standard_aovs(scene.sensor().film()->output().alpha).evaluate(cs.ray, scene.intersect_for_layers(cs.ray), scratch);
   aovs.add_sample(id, scratch, cs.weight);
 }
 

@@ -23,4 +23,10 @@ uint64_t Scene::rays_traced() const {
   return total;
 }
 
+uint64_t Scene::layer_rays_traced() const {
+  uint64_t total = 0;
+  for (uint64_t n : layer_rays_traced_) total += n;
+  return total;
+}
+
 }  // namespace caustica

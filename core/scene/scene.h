@@ -31,6 +31,13 @@ class Scene {
     if (ray_log_) ray_log_->record(ray, false);
     return accel_->intersect(ray);
   }
+  // The same query for the first-hit layers, which re-trace a camera ray
+  // the integrator traces too: counted apart, so that the rays reported for
+  // a render are the integrator's, each once.
+  std::optional<SurfaceInteraction> intersect_for_layers(const Ray& ray) const {
+    ++layer_rays_traced_.local();
+    return accel_->intersect(ray);
+  }
   bool occluded(const Ray& ray) const {
     ++rays_traced_.local();
     if (ray_log_) ray_log_->record(ray, true);
@@ -41,8 +48,10 @@ class Scene {
   void set_ray_log(RayLog* log) { ray_log_ = log; }
   // The acceleration structure itself, for benchmarks that query Embree directly.
   const EmbreeScene& accel() const { return *accel_; }
-  // Rays traced so far, over all threads.
+  // Rays traced so far, over all threads: by intersect() and occluded(),
+  // and by intersect_for_layers().
   uint64_t rays_traced() const;
+  uint64_t layer_rays_traced() const;
 
   const std::vector<std::shared_ptr<Shape>>& shapes() const { return shapes_; }
   const std::vector<std::shared_ptr<Emitter>>& emitters() const { return emitters_; }
@@ -78,7 +87,7 @@ class Scene {
   Vec3d render_origin_;
   std::unique_ptr<EmbreeScene> accel_;
   std::unique_ptr<LightSelection> lights_;
-  mutable tbb::enumerable_thread_specific<uint64_t> rays_traced_{0};
+  mutable tbb::enumerable_thread_specific<uint64_t> rays_traced_{0}, layer_rays_traced_{0};
   RayLog* ray_log_ = nullptr;
 };
 

@@ -18,6 +18,7 @@
 #include "core/registry/properties.h"
 #include "core/render/aov_evaluator.h"
 #include "core/render/pixel_integrator.h"
+#include "core/scene/scene.h"
 
 namespace caustica {
 namespace {
@@ -33,7 +34,9 @@ std::vector<AovSpec> read_aovs(const Properties& props) {
 class AovEstimator final : public PixelEstimator {
  public:
   AovEstimator(const AovEvaluator& evaluator, const Scene& scene) : evaluator_(evaluator), scene_(scene) {}
-  void sample(const Ray& ray, Sampler&, std::span<float> out) const override { evaluator_.evaluate(scene_, ray, out); }
+  void sample(const Ray& ray, Sampler&, std::span<float> out) const override {
+    evaluator_.evaluate(ray, scene_.intersect(ray), out);
+  }
 
  private:
   const AovEvaluator& evaluator_;
