@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geometry/ray.h"
+#include "core/math/next_float.h"
 
 namespace caustica {
 
@@ -18,9 +19,9 @@ inline Vec3 offset_ray_origin(Vec3 p, Vec3 p_error, Vec3 n, Vec3 w) {
   // Round away from p so the offset survives the addition's rounding.
   for (int i = 0; i < 3; ++i) {
     if (offset[i] > 0)
-      po[i] = std::nextafter(po[i], kInfinity);
+      po[i] = next_float_up(po[i]);
     else if (offset[i] < 0)
-      po[i] = std::nextafter(po[i], -kInfinity);
+      po[i] = next_float_down(po[i]);
   }
   return po;
 }
