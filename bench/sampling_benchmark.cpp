@@ -2,6 +2,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 #include "core/registry/properties.h"
 #include "core/sampling/sampler.h"
 #include "core/sampling/warp.h"
@@ -26,11 +28,6 @@ void BM_StartSample(benchmark::State& state, const char* name) {
     ++i;
   }
 }
-BENCHMARK_CAPTURE(BM_StartSample, independent, "independent");
-BENCHMARK_CAPTURE(BM_StartSample, ldsampler, "ldsampler");
-BENCHMARK_CAPTURE(BM_StartSample, stratified, "stratified");
-BENCHMARK_CAPTURE(BM_StartSample, multijitter, "multijitter");
-BENCHMARK_CAPTURE(BM_StartSample, halton, "halton");
 
 // A sample's first 32 draws, as a path of a few bounces makes them.
 void BM_Next1D(benchmark::State& state, const char* name) {
@@ -42,11 +39,6 @@ void BM_Next1D(benchmark::State& state, const char* name) {
     ++i;
   }
 }
-BENCHMARK_CAPTURE(BM_Next1D, independent, "independent");
-BENCHMARK_CAPTURE(BM_Next1D, ldsampler, "ldsampler");
-BENCHMARK_CAPTURE(BM_Next1D, stratified, "stratified");
-BENCHMARK_CAPTURE(BM_Next1D, multijitter, "multijitter");
-BENCHMARK_CAPTURE(BM_Next1D, halton, "halton");
 
 void BM_Next2D(benchmark::State& state, const char* name) {
   auto sampler = make_sampler(name);
@@ -57,11 +49,15 @@ void BM_Next2D(benchmark::State& state, const char* name) {
     ++i;
   }
 }
-BENCHMARK_CAPTURE(BM_Next2D, independent, "independent");
-BENCHMARK_CAPTURE(BM_Next2D, ldsampler, "ldsampler");
-BENCHMARK_CAPTURE(BM_Next2D, stratified, "stratified");
-BENCHMARK_CAPTURE(BM_Next2D, multijitter, "multijitter");
-BENCHMARK_CAPTURE(BM_Next2D, halton, "halton");
+
+[[maybe_unused]] const bool registered = [] {
+  for (const char* name : {"independent", "ldsampler", "stratified", "multijitter", "halton"}) {
+    benchmark::RegisterBenchmark((std::string("BM_StartSample/") + name).c_str(), BM_StartSample, name);
+    benchmark::RegisterBenchmark((std::string("BM_Next1D/") + name).c_str(), BM_Next1D, name);
+    benchmark::RegisterBenchmark((std::string("BM_Next2D/") + name).c_str(), BM_Next2D, name);
+  }
+  return true;
+}();
 
 void BM_CosineHemisphere(benchmark::State& state) {
   auto sampler = make_sampler("independent");

@@ -7,11 +7,12 @@
 
 namespace caustica {
 
-JitteredBlockSampler::JitteredBlockSampler(const Properties& props, uint32_t block_size)
+JitteredBlockSampler::JitteredBlockSampler(const Properties& props, BlockGrid grid)
     : Sampler(read_block_sample_count(props)),
       seed_(props.get_int("seed")),
       jitter_(props.get_bool("jitter")),
-      block_size_(block_size) {}
+      grid_(grid),
+      block_size_(grid.columns * grid.rows) {}
 
 uint32_t JitteredBlockSampler::read_block_sample_count(const Properties& props) {
   const int64_t n = props.get_int("sample_count");

@@ -19,11 +19,7 @@
 namespace caustica {
 namespace {
 
-struct Grid {
-  uint32_t columns, rows;
-};
-
-Grid grid_of(const Properties& props) {
+BlockGrid near_square_grid(const Properties& props) {
   const uint32_t n = JitteredBlockSampler::read_block_sample_count(props);
   const uint32_t columns = uint32_t(std::ceil(std::sqrt(double(n))));
   return {columns, (n + columns - 1) / columns};
@@ -31,8 +27,7 @@ Grid grid_of(const Properties& props) {
 
 class MultijitterSampler final : public JitteredBlockSampler {
  public:
-  explicit MultijitterSampler(const Properties& props)
-      : JitteredBlockSampler(props, grid_of(props).columns * grid_of(props).rows), grid_(grid_of(props)) {}
+  explicit MultijitterSampler(const Properties& props) : JitteredBlockSampler(props, near_square_grid(props)) {}
   MultijitterSampler(const MultijitterSampler&) = default;
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<MultijitterSampler>(*this); }
@@ -47,7 +42,7 @@ class MultijitterSampler final : public JitteredBlockSampler {
   Vec2 next_2d() override {
     const uint64_t h = next_dimension_hash(), h2 = mix_bits(h), h3 = mix_bits(h2), h4 = mix_bits(h3);
     const uint32_t s = permuted_index(h);
-    const uint32_t a = grid_.columns, b = grid_.rows;
+    const uint32_t a = grid().columns, b = grid().rows;
     const uint32_t column = hashed_permutation(s % a, a, h2), row = s / a;
     const uint32_t sub_column = hashed_permutation(row, b, h3);
     const uint32_t sub_row = hashed_permutation(column, a, h4);
@@ -55,9 +50,6 @@ class MultijitterSampler final : public JitteredBlockSampler {
     const float y = (float(row) + (float(sub_row) + jitter(h, 2)) / float(a)) / float(b);
     return {std::min(x, kOneMinusEpsilon), std::min(y, kOneMinusEpsilon)};
   }
-
- private:
-  Grid grid_;
 };
 
 }  // namespace

@@ -16,27 +16,24 @@
 namespace caustica {
 namespace {
 
-uint32_t side_of(const Properties& props) {
-  return uint32_t(std::ceil(std::sqrt(double(JitteredBlockSampler::read_block_sample_count(props)))));
+BlockGrid square_grid(const Properties& props) {
+  const auto side = uint32_t(std::ceil(std::sqrt(double(JitteredBlockSampler::read_block_sample_count(props)))));
+  return {side, side};
 }
 
 class StratifiedSampler final : public JitteredBlockSampler {
  public:
-  explicit StratifiedSampler(const Properties& props)
-      : JitteredBlockSampler(props, side_of(props) * side_of(props)), side_(side_of(props)) {}
+  explicit StratifiedSampler(const Properties& props) : JitteredBlockSampler(props, square_grid(props)) {}
   StratifiedSampler(const StratifiedSampler&) = default;
 
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<StratifiedSampler>(*this); }
 
   Vec2 next_2d() override {
     const uint64_t h = next_dimension_hash();
-    const uint32_t cell = permuted_index(h);
-    return {std::min((float(cell % side_) + jitter(h, 1)) / float(side_), kOneMinusEpsilon),
-            std::min((float(cell / side_) + jitter(h, 2)) / float(side_), kOneMinusEpsilon)};
+    const uint32_t cell = permuted_index(h), side = grid().columns;
+    return {std::min((float(cell % side) + jitter(h, 1)) / float(side), kOneMinusEpsilon),
+            std::min((float(cell / side) + jitter(h, 2)) / float(side), kOneMinusEpsilon)};
   }
-
- private:
-  uint32_t side_;
 };
 
 }  // namespace
