@@ -7,11 +7,17 @@
 //                hit point's interaction: position, normals, uv, error bounds);
 //   PathTracer   the whole render (sampling, BSDFs, lights, film) over as many rays.
 // The gaps between the three are what caustica spends beside ray queries.
+// Beside the Cornell boxes, a generated scene holds a million-triangle mesh
+// (a bumpy sphere in the Cornell room), where traversal dominates.
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/job/render_job.h"
 #include "core/loader/scene_loader.h"
@@ -36,13 +42,64 @@ RenderStats render_once(const LoadedScene& scene, uint32_t spp, uint64_t seed) {
   return RenderJob(scene, settings).run().stats;
 }
 
+// A sphere of rings x segments quads, two triangles each, its radius rippled
+// so that neighbouring triangles are not coplanar, as binary PLY.
+void write_bumpy_sphere(const std::filesystem::path& path, int rings, int segments) {
+  std::vector<float> vertices;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments;
+      const double r = 1 + 0.04 * std::sin(23 * theta) * std::sin(17 * phi);
+      vertices.insert(vertices.end(), {float(r * std::sin(theta) * std::cos(phi)), float(r * std::cos(theta)),
+                                       float(r * std::sin(theta) * std::sin(phi))});
+    }
+  std::ofstream out(path, std::ios::binary);
+  const size_t faces = size_t(2) * rings * segments;
+  out << "ply\nformat binary_little_endian 1.0\nelement vertex " << vertices.size() / 3
+      << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << faces
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  out.write(reinterpret_cast<const char*>(vertices.data()), std::streamsize(vertices.size() * sizeof(float)));
+  const auto face = [&](int a, int b, int c) {
+    const unsigned char n = 3;
+    const int32_t v[3] = {a, b, c};
+    out.write(reinterpret_cast<const char*>(&n), 1);
+    out.write(reinterpret_cast<const char*>(v), sizeof v);
+  };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const int a = i * segments + j, b = i * segments + (j + 1) % segments;
+      face(a, a + segments, b);
+      face(b, a + segments, b + segments);
+    }
+}
+
+// The generated scene's file: the Cornell room and floor around a bumpy
+// sphere of 1.2 million triangles, written once into a temporary folder.
+std::string generated_scene() {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "caustica-ray-throughput";
+  std::filesystem::create_directories(dir);
+  write_bumpy_sphere(dir / "bumpy-sphere.ply", 700, 860);
+  const std::string scenes = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/";
+  std::ofstream(dir / "million-triangles.xml")
+      << "<scene version='3.0.0'><include filename='" << scenes << "cornell/room.xml'/>"
+      << "<shape type='obj'><string name='filename' value='" << scenes << "meshes/cornell/floor.obj'/>"
+      << "<transform name='to_world'><scale value='0.001'/></transform><ref id='white'/></shape>"
+      << "<shape type='ply'><string name='filename' value='bumpy-sphere.ply'/>"
+      << "<transform name='to_world'><scale value='0.16'/><translate x='0.278' y='0.2' z='0.28'/></transform>"
+      << "<ref id='white'/></shape></scene>";
+  return (dir / "million-triangles.xml").string();
+}
+
+std::string scene_file(const std::string& name) {
+  return name == "million-triangles" ? generated_scene() : std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml";
+}
+
 // Benchmarks run one after another on the main thread, so a plain cache will do.
 const Recording& recording(const std::string& name) {
   static std::map<std::string, Recording> cache;
   auto [it, fresh] = cache.try_emplace(name);
   if (fresh) {
-    it->second.scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml",
-                                  {{"res", std::to_string(kRes)}, {"integrator", "path"}});
+    it->second.scene = load_scene(scene_file(name), {{"res", std::to_string(kRes)}, {"integrator", "path"}});
     RayLog log;
     it->second.scene->set_ray_log(&log);
     render_once(it->second.scene, kSpp, 0);
@@ -101,6 +158,10 @@ BENCHMARK_CAPTURE(BM_PathTracer, cornell_box, std::string("cornell-box"))->Unit(
 BENCHMARK_CAPTURE(BM_Embree, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Embree, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SceneQueries, million_triangles, std::string("million-triangles"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PathTracer, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace caustica

@@ -21,7 +21,7 @@
 #include <assimp/ProgressHandler.hpp>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <string>
 
 #include "core/errors/interrupted.h"
 #include "core/registry/properties.h"
@@ -91,12 +91,15 @@ MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
 template <class Parse>
 MeshData read_own_format(const Properties& props, const Parse& parse) {
   const std::filesystem::path file = mesh_file(props);
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
+  // Read in one piece at the file's size: a stream grown by doubling held
+  // up to twice the file, and then a copy of it, at the load's peak.
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  std::string bytes(in ? size_t(in.tellg()) : 0, '\0');
+  in.seekg(0);
+  in.read(bytes.data(), std::streamsize(bytes.size()));
   if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
   try {
-    return parse(bytes.view());
+    return parse(std::string_view(bytes));
   } catch (const MeshFormatError& e) {
     throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
   }
