@@ -91,7 +91,8 @@ std::string generated_scene() {
 }
 
 std::string scene_file(const std::string& name) {
-  return name == "million-triangles" ? generated_scene() : std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml";
+  return name == "million-triangles" ? generated_scene()
+                                     : std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml";
 }
 
 // Benchmarks run one after another on the main thread, so a plain cache will do.
@@ -159,8 +160,7 @@ BENCHMARK_CAPTURE(BM_Embree, cornell_box_glass, std::string("cornell-box-glass")
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Embree, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SceneQueries, million_triangles, std::string("million-triangles"))
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SceneQueries, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 
 }  // namespace
