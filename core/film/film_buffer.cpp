@@ -11,14 +11,16 @@
 
 namespace caustica {
 
-FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels)
+FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels, Moments moments)
     : width_(width), height_(height), channels_(std::move(channels)) {
   const size_t pixels = size_t(width) * height;
   weighted_sum_.assign(pixels * channels_.size(), 0);
   weight_sum_.assign(pixels, 0);
-  weight2_sum_.assign(pixels, 0);
-  w2x_.assign(pixels * 3, 0);
-  w2x2_.assign(pixels * 3, 0);
+  if (moments == Moments::Kept) {
+    weight2_sum_.assign(pixels, 0);
+    w2x_.assign(pixels * 3, 0);
+    w2x2_.assign(pixels * 3, 0);
+  }
   count_.assign(pixels, 0);
 }
 
@@ -33,9 +35,10 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   double* sum = &weighted_sum_[p * channels_.size()];
   for (size_t c = 0; c < channels_.size(); ++c) sum[c] += double(weight) * values[c];
   weight_sum_[p] += weight;
+  count_[p] += samples;
+  if (!keeps_moments()) return;
   const double w2 = double(weight) * weight;
   weight2_sum_[p] += w2;
-  count_[p] += samples;
   for (size_t c = 0; c < std::min<size_t>(3, values.size()); ++c) {
     w2x_[p * 3 + c] += w2 * values[c];
     w2x2_[p * 3 + c] += w2 * values[c] * values[c];
@@ -84,32 +87,39 @@ void FilmBuffer::record_dropped(const SplatList& list) {
 }
 
 std::vector<float> FilmBuffer::resolve() const {
-  std::vector<float> out(weighted_sum_.size(), 0);
-  const size_t nc = channels_.size();
-  for (size_t p = 0; p < weight_sum_.size(); ++p)
-    if (weight_sum_[p] != 0)
-      for (size_t c = 0; c < nc; ++c) out[p * nc + c] = float(weighted_sum_[p * nc + c] / weight_sum_[p]);
-  if (!splat_sum_.empty() && splat_paths_per_pixel_ > 0)
-    for (size_t i = 0; i < out.size(); ++i) out[i] += float(splat_sum_[i] / double(splat_paths_per_pixel_));
+  std::vector<float> out(weighted_sum_.size());
+  for (size_t p = 0; p < weight_sum_.size(); ++p) resolve_pixel(p, &out[p * channels_.size()]);
   return out;
 }
 
-std::vector<float> FilmBuffer::variance() const {
-  std::vector<float> out(w2x_.size(), 0);
+void FilmBuffer::resolve_pixel(size_t p, float* out) const {
   const size_t nc = channels_.size();
-  for (size_t p = 0; p < count_.size(); ++p) {
-    const double n = count_[p], W = weight_sum_[p];
-    if (n < 2 || W == 0) continue;
-    for (size_t c = 0; c < std::min<size_t>(3, nc); ++c) {
-      const double mean = weighted_sum_[p * nc + c] / W;
-      const double spread = w2x2_[p * 3 + c] - 2 * mean * w2x_[p * 3 + c] + mean * mean * weight2_sum_[p];
-      // The sums are double and cannot overflow; a float can, so the
-      // variance of radiance beyond about 1e19 is clamped to the largest one.
-      const double variance = std::max(0.0, spread) / (W * W) * n / (n - 1);
-      out[p * 3 + c] = float(std::min(variance, double(std::numeric_limits<float>::max())));
-    }
-  }
+  for (size_t c = 0; c < nc; ++c)
+    out[c] = weight_sum_[p] != 0 ? float(weighted_sum_[p * nc + c] / weight_sum_[p]) : 0.0f;
+  if (!splat_sum_.empty() && splat_paths_per_pixel_ > 0)
+    for (size_t c = 0; c < nc; ++c) out[c] += float(splat_sum_[p * nc + c] / double(splat_paths_per_pixel_));
+}
+
+std::vector<float> FilmBuffer::variance() const {
+  if (!keeps_moments()) throw std::logic_error("variance() of a film that keeps no moments");
+  std::vector<float> out(w2x_.size());
+  for (size_t p = 0; p < count_.size(); ++p) variance_pixel(p, &out[p * 3]);
   return out;
+}
+
+void FilmBuffer::variance_pixel(size_t p, float* out) const {
+  const size_t nc = channels_.size();
+  const double n = count_[p], W = weight_sum_[p];
+  for (size_t c = 0; c < 3; ++c) {
+    out[c] = 0;
+    if (n < 2 || W == 0 || c >= nc) continue;
+    const double mean = weighted_sum_[p * nc + c] / W;
+    const double spread = w2x2_[p * 3 + c] - 2 * mean * w2x_[p * 3 + c] + mean * mean * weight2_sum_[p];
+    // The sums are double and cannot overflow; a float can, so the
+    // variance of radiance beyond about 1e19 is clamped to the largest one.
+    const double variance = std::max(0.0, spread) / (W * W) * n / (n - 1);
+    out[c] = float(std::min(variance, double(std::numeric_limits<float>::max())));
+  }
 }
 
 namespace {
@@ -131,9 +141,11 @@ void FilmBuffer::for_each_sum(Self& film, size_t p, F&& f) {
   const size_t nc = film.channels_.size();
   for (size_t c = 0; c < nc; ++c) f(film.weighted_sum_[p * nc + c]);
   f(film.weight_sum_[p]);
-  f(film.weight2_sum_[p]);
-  for (size_t c = 0; c < 3; ++c) f(film.w2x_[p * 3 + c]);
-  for (size_t c = 0; c < 3; ++c) f(film.w2x2_[p * 3 + c]);
+  if (film.keeps_moments()) {
+    f(film.weight2_sum_[p]);
+    for (size_t c = 0; c < 3; ++c) f(film.w2x_[p * 3 + c]);
+    for (size_t c = 0; c < 3; ++c) f(film.w2x2_[p * 3 + c]);
+  }
   if (!film.splat_sum_.empty())
     for (size_t c = 0; c < nc; ++c) f(film.splat_sum_[p * nc + c]);
 }
@@ -141,10 +153,14 @@ void FilmBuffer::for_each_sum(Self& film, size_t p, F&& f) {
 std::vector<std::string> FilmBuffer::raw_channels(const std::string& prefix) const {
   std::vector<std::string> sums;
   for (const std::string& c : channels_) sums.push_back("sum." + c);
-  sums.insert(sums.end(), {"weight", "weight2"});
-  // The moments of the first three channels (the beauty), whatever their names.
-  for (const char* moment : {"w2x.", "w2x2."})
-    for (size_t c = 0; c < 3; ++c) sums.push_back(moment + (c < channels_.size() ? channels_[c] : std::to_string(c)));
+  sums.push_back("weight");
+  if (keeps_moments()) {
+    sums.push_back("weight2");
+    // The moments of the first three channels (the beauty), whatever their names.
+    for (const char* moment : {"w2x.", "w2x2."})
+      for (size_t c = 0; c < 3; ++c)
+        sums.push_back(moment + (c < channels_.size() ? channels_[c] : std::to_string(c)));
+  }
   if (!splat_sum_.empty())
     for (const std::string& c : channels_) sums.push_back("splat." + c);
   std::vector<std::string> names;
@@ -157,15 +173,16 @@ std::vector<std::string> FilmBuffer::raw_channels(const std::string& prefix) con
 std::vector<float> FilmBuffer::export_raw() const {
   const size_t per_pixel = raw_channels("").size();
   std::vector<float> out(count_.size() * per_pixel);
-  for (size_t p = 0; p < count_.size(); ++p) {
-    float* o = &out[p * per_pixel];
-    for_each_sum(*this, p, [&](double sum) {
-      split_double(sum, o);
-      o += 3;
-    });
-    *o = float(count_[p]);
-  }
+  for (size_t p = 0; p < count_.size(); ++p) export_raw_pixel(p, &out[p * per_pixel]);
   return out;
+}
+
+void FilmBuffer::export_raw_pixel(size_t p, float* out) const {
+  for_each_sum(*this, p, [&](double sum) {
+    split_double(sum, out);
+    out += 3;
+  });
+  *out = float(count_[p]);
 }
 
 void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {

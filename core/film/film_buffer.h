@@ -21,14 +21,18 @@ struct SampleId {
   uint64_t index = 0;
 };
 
-// Per-pixel accumulation of filter-weighted samples over named channels, with
-// the moments of the first three (the beauty) for variance estimates, plus
+// Per-pixel accumulation of filter-weighted samples over named channels,
+// with (where asked) the moments of the first three (the beauty) for
+// variance estimates, plus
 // an optional splat image for contributions that land on other pixels than
 // their sample's. This is the one place samples enter an image: NaN and Inf
 // are dropped and counted here, never averaged in.
 class FilmBuffer {
  public:
-  FilmBuffer(int width, int height, std::vector<std::string> channels);
+  // Whether the film keeps the moments behind variance(): the beauty does;
+  // the first-hit layers, whose variance nobody reads, need not hold them.
+  enum class Moments { Kept, None };
+  FilmBuffer(int width, int height, std::vector<std::string> channels, Moments moments = Moments::Kept);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -55,11 +59,15 @@ class FilmBuffer {
 
   // The weighted mean of each channel plus the splat image, pixel-interleaved.
   std::vector<float> resolve() const;
+  // The same for one pixel (index y * width + x): channel_count() values.
+  void resolve_pixel(size_t pixel, float* out) const;
   // Per-pixel variance of the weighted mean of the beauty channels,
   // estimated from the samples as sum w^2 (x - mean)^2 / (sum w)^2 with the
   // n / (n - 1) correction; pixel-interleaved, three per pixel. Splats are
-  // not part of it.
+  // not part of it. Only for a film that keeps its moments.
   std::vector<float> variance() const;
+  void variance_pixel(size_t pixel, float* out) const;
+  bool keeps_moments() const { return !weight2_sum_.empty(); }
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
 
   // The sums behind resolve() and variance() as float channels named
@@ -71,6 +79,7 @@ class FilmBuffer {
   std::vector<std::string> raw_channels(const std::string& prefix) const;
   // Pixel-interleaved, raw_channels().size() values per pixel.
   std::vector<float> export_raw() const;
+  void export_raw_pixel(size_t pixel, float* out) const;
   // Adds sums export_raw() gave for a film of the same size and channels;
   // `splat_paths` is the light paths per pixel behind its splats.
   void add_raw(std::span<const float> raw, uint64_t splat_paths);
@@ -85,8 +94,8 @@ class FilmBuffer {
   int width_, height_;
   std::vector<std::string> channels_;
   std::vector<double> weighted_sum_;  // channels per pixel
-  std::vector<double> weight_sum_, weight2_sum_;
-  std::vector<double> w2x_, w2x2_;  // sums of w^2 x and w^2 x^2, three per pixel
+  std::vector<double> weight_sum_;
+  std::vector<double> weight2_sum_, w2x_, w2x2_;  // sums of w^2, w^2 x and w^2 x^2 (three); empty without moments
   std::vector<uint32_t> count_;
   std::vector<double> splat_sum_;  // channels per pixel, allocated by the first splat
   uint64_t splat_paths_per_pixel_ = 0;

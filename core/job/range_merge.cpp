@@ -30,7 +30,8 @@ std::vector<std::string> film_channels(const RenderFile& render, const std::stri
 void add_part(const RenderFile& part, const std::string& prefix, uint64_t splat_paths, FilmBuffer& film) {
   const Image& image = part.image;
   const bool splats = image.channel_index(prefix + "splat." + film.channels().front() + ".0") >= 0;
-  FilmBuffer shape(1, 1, film.channels());
+  FilmBuffer shape(1, 1, film.channels(),
+                   film.keeps_moments() ? FilmBuffer::Moments::Kept : FilmBuffer::Moments::None);
   if (splats) shape.enable_splats();
   const std::vector<std::string> names = shape.raw_channels(prefix);
   std::vector<size_t> from;
@@ -150,7 +151,7 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
   FilmBuffer film(shape.width, shape.height, film_channels(first, "caustica:raw_channels"));
   const std::vector<std::string> aov_channels = film_channels(first, "caustica:raw_aov_channels");
   std::optional<FilmBuffer> aovs;
-  if (!aov_channels.empty()) aovs.emplace(shape.width, shape.height, aov_channels);
+  if (!aov_channels.empty()) aovs.emplace(shape.width, shape.height, aov_channels, FilmBuffer::Moments::None);
   for (const RenderFile* part : parts) {
     const uint64_t paths = sample_count(*part, "caustica:spp");
     add_part(*part, kFilm, paths, film);

@@ -13,7 +13,8 @@ RenderResult RenderJob::run(RenderProgress* progress) const {
   RenderResult result{FilmBuffer(film.width(), film.height(), integrator_->channels()), std::nullopt, {}};
   const bool radiance = result.film.channels() == std::vector<std::string>{"R", "G", "B"};
   if (settings_.aovs && radiance)
-    result.aovs.emplace(film.width(), film.height(), standard_aov_channels(film.output().alpha));
+    result.aovs.emplace(film.width(), film.height(), standard_aov_channels(film.output().alpha),
+                        FilmBuffer::Moments::None);
   RenderOptions options;
   options.spp = settings_.spp;
   options.first_sample = settings_.first_sample;

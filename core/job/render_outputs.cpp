@@ -1,35 +1,44 @@
 #include "core/job/render_outputs.h"
 
+#include <functional>
+
 #include "core/version.h"
 
 namespace caustica {
 
 Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums) {
-  const size_t pixels = size_t(film.width()) * film.height();
-  std::vector<std::pair<std::vector<std::string>, std::vector<float>>> blocks;
-  blocks.emplace_back(film.channels(), film.resolve());
+  // Each layer writes its values for one pixel straight into the image:
+  // no layer is held whole beside it.
+  struct Layer {
+    std::vector<std::string> names;
+    std::function<void(size_t pixel, float* out)> fill;
+  };
+  std::vector<Layer> layers;
+  layers.push_back({film.channels(), [&](size_t p, float* out) { film.resolve_pixel(p, out); }});
   if (aovs) {
-    blocks.emplace_back(aovs->channels(), aovs->resolve());
+    layers.push_back({aovs->channels(), [&](size_t p, float* out) { aovs->resolve_pixel(p, out); }});
     if (variance_known)
-      blocks.emplace_back(std::vector<std::string>{"variance.R", "variance.G", "variance.B"}, film.variance());
-    std::vector<float> counts(pixels);
-    for (size_t p = 0; p < pixels; ++p)
-      counts[p] = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
-    blocks.emplace_back(std::vector<std::string>{"samples.Y"}, std::move(counts));
+      layers.push_back({{"variance.R", "variance.G", "variance.B"},
+                        [&](size_t p, float* out) { film.variance_pixel(p, out); }});
+    layers.push_back({{"samples.Y"}, [&](size_t p, float* out) {
+                        *out = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
+                      }});
   }
   if (raw_sums) {
-    blocks.emplace_back(film.raw_channels("raw."), film.export_raw());
-    if (aovs) blocks.emplace_back(aovs->raw_channels("raw.aov."), aovs->export_raw());
+    layers.push_back({film.raw_channels("raw."), [&](size_t p, float* out) { film.export_raw_pixel(p, out); }});
+    if (aovs)
+      layers.push_back({aovs->raw_channels("raw.aov."), [&](size_t p, float* out) { aovs->export_raw_pixel(p, out); }});
   }
   Image image{film.width(), film.height(), {}, {}};
-  for (const auto& [names, values] : blocks) image.channels.insert(image.channels.end(), names.begin(), names.end());
-  const size_t total = image.channels.size();
+  for (const Layer& layer : layers) image.channels.insert(image.channels.end(), layer.names.begin(), layer.names.end());
+  const size_t total = image.channels.size(), pixels = size_t(film.width()) * film.height();
   image.pixels.resize(pixels * total);
-  size_t offset = 0;
-  for (const auto& [names, values] : blocks) {
-    const size_t n = names.size();
-    for (size_t p = 0; p < pixels; ++p) std::copy_n(&values[p * n], n, &image.pixels[p * total + offset]);
-    offset += n;
+  for (size_t p = 0; p < pixels; ++p) {
+    float* out = &image.pixels[p * total];
+    for (const Layer& layer : layers) {
+      layer.fill(p, out);
+      out += layer.names.size();
+    }
   }
   return image;
 }

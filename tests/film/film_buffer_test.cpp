@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/film/reconstruction_filter.h"
 #include "core/film/splat_list.h"
@@ -25,6 +26,33 @@ TEST(FilmBuffer, WeightedMeanAndVariance) {
   // sum w^2 (x - mean)^2 / (sum w)^2 * n / (n - 1) = (2.25 + 9 * 0.25) / 16 * 2
   EXPECT_FLOAT_EQ(var[3], 0.5625f);
   EXPECT_EQ(film.sample_count({1, 0}), 2u);
+}
+
+// A film without moments (the first-hit layers') averages as one with
+// them, and its raw sums carry the weighted sums, the weight and the count
+// only; they add into another such film exactly.
+TEST(FilmBuffer, AFilmWithoutMomentsKeepsMeansAndRawSumsOnly) {
+  FilmBuffer with(2, 1, {"R", "G", "B", "Z"}), without(2, 1, {"R", "G", "B", "Z"}, FilmBuffer::Moments::None);
+  const float a[4] = {1, 2, 3, 0.1f}, b[4] = {3, 2, 1, 7};
+  for (FilmBuffer* film : {&with, &without}) {
+    film->add_sample({{1, 0}, 0}, a, 1);
+    film->add_sample({{1, 0}, 1}, b, 3);
+  }
+  EXPECT_TRUE(with.keeps_moments());
+  EXPECT_FALSE(without.keeps_moments());
+  EXPECT_EQ(without.resolve(), with.resolve());
+  EXPECT_FLOAT_EQ(without.resolve()[7], (0.1f + 3 * 7) / 4);
+  EXPECT_EQ(without.sample_count({1, 0}), 2u);
+  EXPECT_THROW(without.variance(), std::logic_error);
+  const std::vector<std::string> names = without.raw_channels("p.");
+  ASSERT_EQ(names.size(), (4 + 1) * 3 + 1u);
+  EXPECT_EQ(names[12], "p.weight.0");
+  EXPECT_EQ(names.back(), "p.count");
+  FilmBuffer merged(2, 1, {"R", "G", "B", "Z"}, FilmBuffer::Moments::None);
+  merged.add_raw(without.export_raw(), 0);
+  merged.add_raw(without.export_raw(), 0);
+  EXPECT_EQ(merged.resolve(), with.resolve());
+  EXPECT_EQ(merged.sample_count({1, 0}), 4u);
 }
 
 TEST(FilmBuffer, NonFiniteSamplesAreDroppedAndCounted) {
