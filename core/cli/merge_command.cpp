@@ -50,7 +50,7 @@ int MergeCommand::run() const {
     merged.metadata["caustica:estimated_rel_mse"] = number_text(error.rel_mse);
   }
   bool half = exr_format_ == "half" && !ranges;
-  if (const size_t n = values_beyond_half(merged.image); half && n > 0) {
+  if (const size_t n = count_extreme_values(rows_of(merged.image)).beyond_half; half && n > 0) {
     half = false;
     std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n", n,
                  output_.c_str());

@@ -16,15 +16,21 @@ std::array<size_t, 3> beauty_channels(const Image& image) {
   return {0, 1, 2};
 }
 
-std::vector<float> Developer::develop(const Image& image) const {
+std::vector<float> Developer::develop(Image image) const {
   const size_t pixels = size_t(image.width) * image.height;
   const size_t nc = image.channels.size();
   const float scale = std::exp2(op_->exposure());
   const auto source = beauty_channels(image);
-  std::vector<float> rgb(pixels * 3, 0.0f);
-  for (size_t p = 0; p < pixels; ++p)
-    for (size_t c = 0; c < 3; ++c)
-      if (source[c] < nc) rgb[p * 3 + c] = image.pixels[p * nc + source[c]] * scale;
+  std::vector<float> rgb;
+  if (nc == 3 && source == std::array<size_t, 3>{0, 1, 2}) {
+    rgb = std::move(image.pixels);
+    for (float& v : rgb) v *= scale;
+  } else {
+    rgb.assign(pixels * 3, 0.0f);
+    for (size_t p = 0; p < pixels; ++p)
+      for (size_t c = 0; c < 3; ++c)
+        if (source[c] < nc) rgb[p * 3 + c] = image.pixels[p * nc + source[c]] * scale;
+  }
   op_->apply(rgb);
   if (gamma_)
     for (float& v : rgb) v = std::pow(std::max(v, 0.0f), 1 / *gamma_);

@@ -23,8 +23,8 @@ class Developer {
 
   // Takes the image's R, G, B channels (else its first three, as for AOV
   // renders) as linear Rec.709; returns display-encoded RGB in [0, 1],
-  // pixel-interleaved.
-  std::vector<float> develop(const Image& image) const;
+  // pixel-interleaved. An image of R, G, B alone is developed in place.
+  std::vector<float> develop(Image image) const;
   std::string describe() const;
 
  private:

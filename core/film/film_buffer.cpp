@@ -158,8 +158,7 @@ std::vector<std::string> FilmBuffer::raw_channels(const std::string& prefix) con
     sums.push_back("weight2");
     // The moments of the first three channels (the beauty), whatever their names.
     for (const char* moment : {"w2x.", "w2x2."})
-      for (size_t c = 0; c < 3; ++c)
-        sums.push_back(moment + (c < channels_.size() ? channels_[c] : std::to_string(c)));
+      for (size_t c = 0; c < 3; ++c) sums.push_back(moment + (c < channels_.size() ? channels_[c] : std::to_string(c)));
   }
   if (!splat_sum_.empty())
     for (const std::string& c : channels_) sums.push_back("splat." + c);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include "core/image/atomic_file.h"
@@ -44,29 +45,68 @@ void write_pfm(const std::filesystem::path& path, int width, int height, int cha
 
 }  // namespace
 
-size_t values_beyond_half(const Image& image) {
-  size_t n = 0;
-  for (float v : image.pixels) n += std::abs(v) > 65504.0f;
+ImageRows rows_of(const Image& image) {
+  const size_t row = size_t(image.width) * image.channels.size();
+  return {image.width, image.height, image.channels, [&image, row](int y_begin, int y_end, float* out) {
+            std::copy(image.pixels.begin() + ptrdiff_t(size_t(y_begin) * row),
+                      image.pixels.begin() + ptrdiff_t(size_t(y_end) * row), out);
+          }};
+}
+
+namespace {
+
+// Rows per band: about a million values, at least one row.
+int band_rows(const ImageRows& rows) {
+  const size_t row = std::max<size_t>(1, size_t(rows.width) * rows.channels.size());
+  return int(std::clamp<size_t>((size_t(1) << 20) / row, 1, size_t(std::max(rows.height, 1))));
+}
+
+template <class F>
+void for_each_band(const ImageRows& rows, F&& f) {
+  const int band = band_rows(rows);
+  std::vector<float> values(size_t(band) * rows.width * rows.channels.size());
+  for (int y = 0; y < rows.height; y += band) {
+    const int end = std::min(rows.height, y + band);
+    rows.fill(y, end, values.data());
+    f(y, end, std::span<const float>(values.data(), size_t(end - y) * rows.width * rows.channels.size()));
+  }
+}
+
+}  // namespace
+
+ExtremeValues count_extreme_values(const ImageRows& rows) {
+  ExtremeValues n;
+  for_each_band(rows, [&](int, int, std::span<const float> values) {
+    for (float v : values) {
+      n.beyond_half += std::abs(v) > 65504.0f;
+      n.at_float_limit += std::abs(v) >= std::numeric_limits<float>::max();
+    }
+  });
   return n;
 }
 
-size_t values_at_float_limit(const Image& image) {
-  size_t n = 0;
-  for (float v : image.pixels) n += std::abs(v) >= std::numeric_limits<float>::max();
-  return n;
-}
-
-void write_exr(const std::filesystem::path& path, const Image& image,
+void write_exr(const std::filesystem::path& path, const ImageRows& rows,
                const std::map<std::string, std::string>& metadata, bool half_float) {
-  OIIO::ImageSpec spec(image.width, image.height, int(image.channels.size()),
+  OIIO::ImageSpec spec(rows.width, rows.height, int(rows.channels.size()),
                        half_float ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-  spec.channelnames = image.channels;
+  spec.channelnames = rows.channels;
   spec.alpha_channel = -1;
   spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
   write_atomically(path, [&](const std::filesystem::path& tmp) {
-    write_with_oiio(tmp, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "': " + OIIO::geterror());
+    bool ok = out->open(tmp.string(), spec);
+    for_each_band(rows, [&](int y, int end, std::span<const float> values) {
+      ok = ok && out->write_scanlines(y, end, 0, OIIO::TypeDesc::FLOAT, values.data());
+    });
+    if (!ok || !out->close()) throw std::runtime_error("cannot write '" + tmp.string() + "': " + out->geterror());
   });
+}
+
+void write_exr(const std::filesystem::path& path, const Image& image,
+               const std::map<std::string, std::string>& metadata, bool half_float) {
+  write_exr(path, rows_of(image), metadata, half_float);
 }
 
 void write_plain_float(const std::filesystem::path& path, const Image& image,
@@ -90,7 +130,7 @@ void write_plain_float(const std::filesystem::path& path, const Image& image,
   });
 }
 
-std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width, int bits) {
+std::vector<uint16_t> quantize(std::span<const float> display_rgb, int width, int bits, int first_row) {
   if (bits != 8 && bits != 16) throw std::invalid_argument("PNG bit depth must be 8 or 16");
   const float levels = bits == 8 ? 255.0f : 65535.0f;
   std::vector<uint16_t> out(display_rgb.size());
@@ -99,7 +139,8 @@ std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width,
     float noise = 0;
     if (bits == 8) {
       const size_t pixel = i / 3;
-      const uint64_t h = mix_bits((uint64_t(pixel % width) << 32) ^ (pixel / width) ^ (uint64_t(i % 3) << 62));
+      const uint64_t h =
+          mix_bits((uint64_t(pixel % width) << 32) ^ (pixel / width + size_t(first_row)) ^ (uint64_t(i % 3) << 62));
       // The sum of two uniforms in [0, 1), less 1: triangular on (-1, 1).
       noise = float(h & 0xffffffu) * 0x1p-24f + float((h >> 32) & 0xffffffu) * 0x1p-24f - 1;
     }
@@ -110,18 +151,28 @@ std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width,
 
 void write_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb,
                int bits) {
-  const std::vector<uint16_t> q = quantize(display_rgb, width, bits);
-  if (bits == 8) {
-    const std::vector<uint8_t> bytes(q.begin(), q.end());
-    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    write_atomically(path, [&](const std::filesystem::path& tmp) {
-      write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT8, bytes.data());
-    });
-  } else {
-    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT16);
-    write_atomically(
-        path, [&](const std::filesystem::path& tmp) { write_with_oiio(tmp, spec, OIIO::TypeDesc::UINT16, q.data()); });
-  }
+  const OIIO::TypeDesc type = bits == 8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
+  const OIIO::ImageSpec spec(width, height, 3, type);
+  // Quantised a band of rows at a time: no second whole image beside the first.
+  const int band = std::max(1, (1 << 18) / std::max(1, 3 * width));
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "': " + OIIO::geterror());
+    bool ok = out->open(tmp.string(), spec);
+    std::vector<uint8_t> bytes;
+    for (int y = 0; ok && y < height; y += band) {
+      const int end = std::min(height, y + band);
+      const std::span<const float> rows(display_rgb.data() + size_t(y) * width * 3, size_t(end - y) * width * 3);
+      const std::vector<uint16_t> q = quantize(rows, width, bits, y);
+      if (bits == 16) {
+        ok = out->write_scanlines(y, end, 0, type, q.data());
+      } else {
+        bytes.assign(q.begin(), q.end());
+        ok = out->write_scanlines(y, end, 0, type, bytes.data());
+      }
+    }
+    if (!ok || !out->close()) throw std::runtime_error("cannot write '" + tmp.string() + "': " + out->geterror());
+  });
 }
 
 }  // namespace caustica

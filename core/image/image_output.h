@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,14 +24,28 @@ struct Image {
   }
 };
 
-// How many values a half-float file would turn into infinities: those
-// beyond 65504, half's largest, in magnitude.
-size_t values_beyond_half(const Image& image);
-// How many values are at float's largest magnitude, where a larger value
-// was clamped.
-size_t values_at_float_limit(const Image& image);
+// An image made row by row when asked, so that a large one is written
+// without being held whole: `fill` writes rows [y_begin, y_end),
+// pixel-interleaved, channels.size() values per pixel.
+struct ImageRows {
+  int width = 0, height = 0;
+  std::vector<std::string> channels;
+  std::function<void(int y_begin, int y_end, float* out)> fill;
+};
+ImageRows rows_of(const Image& image);
 
-// Writes a linear OpenEXR file (float or half) with string metadata; atomic.
+// Values a file may not hold as they are: those a half-float file would turn
+// into infinities (beyond 65504, half's largest, in magnitude), and those at
+// float's largest magnitude, where a larger value was clamped.
+struct ExtremeValues {
+  size_t beyond_half = 0, at_float_limit = 0;
+};
+ExtremeValues count_extreme_values(const ImageRows& rows);
+
+// Writes a linear OpenEXR file (float or half) with string metadata, a band
+// of rows at a time; atomic.
+void write_exr(const std::filesystem::path& path, const ImageRows& rows,
+               const std::map<std::string, std::string>& metadata, bool half_float);
 void write_exr(const std::filesystem::path& path, const Image& image,
                const std::map<std::string, std::string>& metadata, bool half_float);
 
@@ -41,7 +57,8 @@ void write_plain_float(const std::filesystem::path& path, const Image& image, co
 // 8-bit output is dithered with triangular noise of +-1 step (a pure function
 // of the pixel, so outputs are reproducible): smooth gradients then show
 // noise finer than the eye resolves instead of bands.
-std::vector<uint16_t> quantize(const std::vector<float>& display_rgb, int width, int bits);
+// `display_rgb` holds whole rows, the first of them row `first_row`.
+std::vector<uint16_t> quantize(std::span<const float> display_rgb, int width, int bits, int first_row = 0);
 
 // Writes display-referred RGB (in [0, 1]) as an 8- or 16-bit PNG; atomic.
 void write_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& display_rgb,

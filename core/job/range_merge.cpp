@@ -30,8 +30,7 @@ std::vector<std::string> film_channels(const RenderFile& render, const std::stri
 void add_part(const RenderFile& part, const std::string& prefix, uint64_t splat_paths, FilmBuffer& film) {
   const Image& image = part.image;
   const bool splats = image.channel_index(prefix + "splat." + film.channels().front() + ".0") >= 0;
-  FilmBuffer shape(1, 1, film.channels(),
-                   film.keeps_moments() ? FilmBuffer::Moments::Kept : FilmBuffer::Moments::None);
+  FilmBuffer shape(1, 1, film.channels(), film.keeps_moments() ? FilmBuffer::Moments::Kept : FilmBuffer::Moments::None);
   if (splats) shape.enable_splats();
   const std::vector<std::string> names = shape.raw_channels(prefix);
   std::vector<size_t> from;

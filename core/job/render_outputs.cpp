@@ -1,68 +1,69 @@
 #include "core/job/render_outputs.h"
 
-#include <functional>
+#include <algorithm>
 
 #include "core/version.h"
 
 namespace caustica {
 
-Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums) {
-  // Each layer writes its values for one pixel straight into the image:
-  // no layer is held whole beside it.
-  struct Layer {
-    std::vector<std::string> names;
-    std::function<void(size_t pixel, float* out)> fill;
+RenderLayers::RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums,
+                           PixelFormat format) {
+  // Each layer writes its values for one pixel straight into the row.
+  std::vector<std::string> names;
+  const auto add = [&](const std::vector<std::string>& channels, std::function<void(size_t, float*)> fill) {
+    names.insert(names.end(), channels.begin(), channels.end());
+    layers_.push_back({channels.size(), std::move(fill)});
   };
-  std::vector<Layer> layers;
-  layers.push_back({film.channels(), [&](size_t p, float* out) { film.resolve_pixel(p, out); }});
+  add(film.channels(), [&film](size_t p, float* out) { film.resolve_pixel(p, out); });
   if (aovs) {
-    layers.push_back({aovs->channels(), [&](size_t p, float* out) { aovs->resolve_pixel(p, out); }});
+    add(aovs->channels(), [aovs](size_t p, float* out) { aovs->resolve_pixel(p, out); });
     if (variance_known)
-      layers.push_back({{"variance.R", "variance.G", "variance.B"},
-                        [&](size_t p, float* out) { film.variance_pixel(p, out); }});
-    layers.push_back({{"samples.Y"}, [&](size_t p, float* out) {
-                        *out = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
-                      }});
+      add({"variance.R", "variance.G", "variance.B"}, [&film](size_t p, float* out) { film.variance_pixel(p, out); });
+    add({"samples.Y"}, [&film](size_t p, float* out) {
+      *out = float(film.sample_count({int(p % film.width()), int(p / film.width())}));
+    });
   }
   if (raw_sums) {
-    layers.push_back({film.raw_channels("raw."), [&](size_t p, float* out) { film.export_raw_pixel(p, out); }});
-    if (aovs)
-      layers.push_back({aovs->raw_channels("raw.aov."), [&](size_t p, float* out) { aovs->export_raw_pixel(p, out); }});
+    add(film.raw_channels("raw."), [&film](size_t p, float* out) { film.export_raw_pixel(p, out); });
+    if (aovs) add(aovs->raw_channels("raw.aov."), [aovs](size_t p, float* out) { aovs->export_raw_pixel(p, out); });
   }
-  Image image{film.width(), film.height(), {}, {}};
-  for (const Layer& layer : layers) image.channels.insert(image.channels.end(), layer.names.begin(), layer.names.end());
-  const size_t total = image.channels.size(), pixels = size_t(film.width()) * film.height();
-  image.pixels.resize(pixels * total);
-  for (size_t p = 0; p < pixels; ++p) {
-    float* out = &image.pixels[p * total];
-    for (const Layer& layer : layers) {
-      layer.fill(p, out);
-      out += layer.names.size();
-    }
+  const auto at = [&](const char* name) { return int(std::find(names.begin(), names.end(), name) - names.begin()); };
+  const int r = at("R"), g = at("G"), b = at("B");
+  if (format != PixelFormat::Rgb && b < int(names.size())) {
+    // Rows of the Rec. 709 (D65) to CIE XYZ matrix; the middle one is luminance.
+    static const float kToXyz[3][3] = {{0.4124564f, 0.3575761f, 0.1804375f},
+                                       {0.2126729f, 0.7151522f, 0.0721750f},
+                                       {0.0193339f, 0.1191920f, 0.9503041f}};
+    const int first = format == PixelFormat::Luminance ? 1 : 0, last = format == PixelFormat::Luminance ? 2 : 3;
+    std::vector<std::string> xyz;
+    for (int row = first; row < last; ++row) xyz.push_back(std::string(1, "XYZ"[row]));
+    // The layer is filled after the others: its pixel's R, G, B lie behind it.
+    const ptrdiff_t back = ptrdiff_t(names.size());
+    add(xyz, [=](size_t, float* out) {
+      const float* pixel = out - back;
+      for (int row = first; row < last; ++row)
+        out[row - first] = kToXyz[row][0] * pixel[r] + kToXyz[row][1] * pixel[g] + kToXyz[row][2] * pixel[b];
+    });
   }
+  const size_t width = size_t(film.width());
+  rows_ = {film.width(), film.height(), std::move(names), [this, width](int y_begin, int y_end, float* out) {
+             for (size_t p = size_t(y_begin) * width; p < size_t(y_end) * width; ++p)
+               for (const Layer& layer : layers_) {
+                 layer.fill(p, out);
+                 out += layer.channels;
+               }
+           }};
+}
+
+Image RenderLayers::image() const {
+  Image image{rows_.width, rows_.height, rows_.channels, {}};
+  image.pixels.resize(size_t(image.width) * image.height * image.channels.size());
+  rows_.fill(0, image.height, image.pixels.data());
   return image;
 }
 
-void add_pixel_format_channels(Image& image, PixelFormat format) {
-  if (format == PixelFormat::Rgb) return;
-  // Rows of the Rec. 709 (D65) to CIE XYZ matrix; the middle one is luminance.
-  static const float kToXyz[3][3] = {
-      {0.4124564f, 0.3575761f, 0.1804375f}, {0.2126729f, 0.7151522f, 0.0721750f}, {0.0193339f, 0.1191920f, 0.9503041f}};
-  const int rows_begin = format == PixelFormat::Luminance ? 1 : 0, rows_end = format == PixelFormat::Luminance ? 2 : 3;
-  const int r = image.channel_index("R"), g = image.channel_index("G"), b = image.channel_index("B");
-  const size_t old_count = image.channels.size(), added = size_t(rows_end - rows_begin);
-  const size_t pixels = size_t(image.width) * image.height;
-  std::vector<float> out(pixels * (old_count + added));
-  for (size_t p = 0; p < pixels; ++p) {
-    const float* in = &image.pixels[p * old_count];
-    float* o = &out[p * (old_count + added)];
-    std::copy_n(in, old_count, o);
-    for (int row = rows_begin; row < rows_end; ++row)
-      o[old_count + size_t(row - rows_begin)] =
-          kToXyz[row][0] * in[r] + kToXyz[row][1] * in[g] + kToXyz[row][2] * in[b];
-  }
-  for (int row = rows_begin; row < rows_end; ++row) image.channels.push_back(std::string(1, "XYZ"[row]));
-  image.pixels = std::move(out);
+Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums) {
+  return RenderLayers(film, aovs, variance_known, raw_sums).image();
 }
 
 void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -13,13 +14,31 @@ namespace caustica {
 // The layers of a render's EXR: the film's channels, then (for radiance)
 // the first-hit layers, the per-pixel variance where it describes the
 // estimate, and samples.Y; with `raw_sums`, the films' raw sums (raw.*,
-// raw.aov.*), from which renders of disjoint sample ranges merge exactly.
-Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums);
+// raw.aov.*), from which renders of disjoint sample ranges merge exactly;
+// last, the colour channels the pixel format asks for beside R, G, B (Y
+// for luminance, X, Y, Z for xyz, from linear Rec. 709 with its D65 white).
+// Rows are made from the films when asked, so the image is never held
+// whole unless image() is called.
+class RenderLayers {
+ public:
+  RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums,
+               PixelFormat format = PixelFormat::Rgb);
+  // rows() refers to the object itself.
+  RenderLayers(const RenderLayers&) = delete;
+  RenderLayers& operator=(const RenderLayers&) = delete;
+  const ImageRows& rows() const { return rows_; }
+  Image image() const;
 
-// Adds the colour channels the film's pixel format asks for beside R, G, B
-// (caustica's own tools read those): Y for luminance, X, Y, Z for xyz, from
-// linear Rec. 709 with its D65 white.
-void add_pixel_format_channels(Image& image, PixelFormat format);
+ private:
+  struct Layer {
+    size_t channels;
+    std::function<void(size_t pixel, float* out)> fill;
+  };
+  std::vector<Layer> layers_;
+  ImageRows rows_;
+};
+
+Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums);
 
 // The metadata caustica writes beside a render: scene, plan, integrator,
 // the sample range, time, counts, seed, what the integrator reported, and

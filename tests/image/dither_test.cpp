@@ -64,7 +64,7 @@ TEST(Dither, BreaksBandsAndKeepsRegionAverages) {
 }
 
 TEST(Dither, SixteenBitsRoundWithoutNoise) {
-  const auto q = quantize({0.0f, 0.5f, 1.0f, 2.0f, -1.0f, NAN}, 2, 16);
+  const auto q = quantize(std::vector<float>{0.0f, 0.5f, 1.0f, 2.0f, -1.0f, NAN}, 2, 16);
   EXPECT_EQ(q, (std::vector<uint16_t>{0, 32768, 65535, 65535, 0, 0}));
 }
 
