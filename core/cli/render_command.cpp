@@ -126,12 +126,17 @@ int RenderCommand::run() const {
   }
   const RenderStats& stats = result->stats;
 
-  const RenderLayers layers(result->film, result->aovs ? &*result->aovs : nullptr, stats.variance_known, raw_sums_,
-                            film.output().pixels);
+  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(*result);
+  const uint64_t layer_rays_before = job.scene()->layer_rays_traced();
+  std::optional<RenderLayers> layers;
+  if (first_hit)
+    layers.emplace(result->film, *first_hit, stats.variance_known, raw_sums_, film.output().pixels);
+  else
+    layers.emplace(result->film, nullptr, stats.variance_known, raw_sums_, film.output().pixels);
   std::map<std::string, std::string> metadata = render_metadata(job, *result, scene_, raw_sums_);
   metadata["caustica:develop"] = developer.describe();
   bool half = !raw_sums_ && !plain && (exr_format_.empty() ? film.half_float() : exr_format_ == "half");
-  const ExtremeValues extreme = count_extreme_values(layers.rows());
+  const ExtremeValues extreme = layers->extreme_values();
   if (half && extreme.beyond_half > 0) {
     half = false;
     std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n",
@@ -142,24 +147,25 @@ int RenderCommand::run() const {
                  "caustica: warning: %zu variance values exceed the float range and are clamped to its largest\n",
                  extreme.at_float_limit);
   if (!plain)
-    write_exr(exr, layers.rows(), metadata, half);
+    write_exr(exr, layers->rows(), metadata, half);
   else if (exr.extension() == ".pfm" && film.output().pixels == PixelFormat::Luminance)
-    write_plain_float(exr, layers.image(), {"Y"});
+    write_plain_float(exr, layers->image(), {"Y"});
   else
-    write_plain_float(exr, layers.image(), {"R", "G", "B"});
+    write_plain_float(exr, layers->image(), {"R", "G", "B"});
   // The picture needs only the beauty: it is resolved again rather than
   // taken from a whole image of every layer.
   const FilmBuffer& beauty = result->film;
   write_png(png, beauty.width(), beauty.height(),
             developer.develop(Image{beauty.width(), beauty.height(), beauty.channels(), beauty.resolve()}),
             develop_.png_bits());
+  const uint64_t layer_rays = job.scene()->layer_rays_traced() - layer_rays_before;
 
   if (!quiet_) {
     std::printf(
         "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s (the integrator's rays; the first-hit "
         "layers' %.3g M rays apart), %llu non-finite samples dropped%s -> %s, %s\n",
         scene_.c_str(), job.integrator().describe().c_str(), film.width(), film.height(), stats.spp, stats.seconds,
-        stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, double(stats.layer_rays) * 1e-6,
+        stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, double(layer_rays) * 1e-6,
         static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "", exr.c_str(),
         png.c_str());
   }

@@ -90,6 +90,12 @@ void write_exr(const std::filesystem::path& path, const ImageRows& rows,
   OIIO::ImageSpec spec(rows.width, rows.height, int(rows.channels.size()),
                        half_float ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
   spec.channelnames = rows.channels;
+  if (half_float && !rows.float_only.empty())
+    for (const std::string& name : rows.channels)
+      spec.channelformats.push_back(std::find(rows.float_only.begin(), rows.float_only.end(), name) !=
+                                            rows.float_only.end()
+                                        ? OIIO::TypeDesc::FLOAT
+                                        : OIIO::TypeDesc::HALF);
   spec.alpha_channel = -1;
   spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);

@@ -31,6 +31,8 @@ struct ImageRows {
   int width = 0, height = 0;
   std::vector<std::string> channels;
   std::function<void(int y_begin, int y_end, float* out)> fill;
+  // Channels a half-float file still holds in float.
+  std::vector<std::string> float_only;
 };
 ImageRows rows_of(const Image& image);
 
@@ -42,8 +44,8 @@ struct ExtremeValues {
 };
 ExtremeValues count_extreme_values(const ImageRows& rows);
 
-// Writes a linear OpenEXR file (float or half) with string metadata, a band
-// of rows at a time; atomic.
+// Writes a linear OpenEXR file (float or half, rows.float_only in float
+// either way) with string metadata, a band of rows at a time; atomic.
 void write_exr(const std::filesystem::path& path, const ImageRows& rows,
                const std::map<std::string, std::string>& metadata, bool half_float);
 void write_exr(const std::filesystem::path& path, const Image& image,

@@ -10,11 +10,7 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
 
 RenderResult RenderJob::run(RenderProgress* progress) const {
   const Film& film = *scene_->sensor().film();
-  RenderResult result{FilmBuffer(film.width(), film.height(), integrator_->channels()), std::nullopt, {}};
-  const bool radiance = result.film.channels() == std::vector<std::string>{"R", "G", "B"};
-  if (settings_.aovs && radiance)
-    result.aovs.emplace(film.width(), film.height(), standard_aov_channels(film.output().alpha),
-                        FilmBuffer::Moments::None);
+  RenderResult result{FilmBuffer(film.width(), film.height(), integrator_->channels()), {}};
   RenderOptions options;
   options.spp = settings_.spp;
   options.first_sample = settings_.first_sample;
@@ -22,8 +18,14 @@ RenderResult RenderJob::run(RenderProgress* progress) const {
   options.seed = settings_.seed;
   options.threads = settings_.threads;
   options.stop = settings_.stop;
-  result.stats = render(*scene_, *integrator_, options, result.film, result.aovs ? &*result.aovs : nullptr, progress);
+  result.stats = render(*scene_, *integrator_, options, result.film, progress);
   return result;
+}
+
+std::optional<FirstHitLayers> RenderJob::first_hit_layers(const RenderResult& result) const {
+  if (!settings_.aovs || result.film.channels() != std::vector<std::string>{"R", "G", "B"}) return std::nullopt;
+  return std::optional<FirstHitLayers>(std::in_place, *scene_, settings_.seed, settings_.first_sample, result.film,
+                                       settings_.threads);
 }
 
 ReplayedSample RenderJob::replay(Vec2i pixel, uint64_t index) const {

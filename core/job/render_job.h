@@ -9,6 +9,7 @@
 
 #include "core/film/film_buffer.h"
 #include "core/loader/scene_loader.h"
+#include "core/render/first_hit_layers.h"
 #include "core/render/renderer.h"
 
 namespace caustica {
@@ -23,14 +24,13 @@ struct RenderSettings {
   double time_limit = 0;      // seconds; when positive, instead of spp
   uint64_t seed = 0;
   int threads = 0;   // 0: all cores
-  bool aovs = true;  // the first-hit layers, for integrators of radiance
+  bool aovs = true;  // the first-hit layers, for integrators of radiance (FirstHitLayers)
   const std::atomic<bool>* stop = nullptr;
 };
 
-// What a render made: its film, the first-hit layers, and its report.
+// What a render made: its film and its report.
 struct RenderResult {
   FilmBuffer film;
-  std::optional<FilmBuffer> aovs;
   RenderStats stats;
 };
 
@@ -50,6 +50,10 @@ class RenderJob {
   std::string plan() const { return integrator_->plan(*scene_); }
 
   RenderResult run(RenderProgress* progress = nullptr) const;
+  // The first-hit layers of a result of run(), to be evaluated as its image
+  // is written; none unless the settings ask for them and the integrator
+  // renders radiance. They refer to the job and to `result`.
+  std::optional<FirstHitLayers> first_hit_layers(const RenderResult& result) const;
   // Runs one sample alone, as run() renders it.
   ReplayedSample replay(Vec2i pixel, uint64_t index) const;
 

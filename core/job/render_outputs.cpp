@@ -1,22 +1,49 @@
 #include "core/job/render_outputs.h"
 
 #include <algorithm>
+#include <memory>
+#include <optional>
 
 #include "core/version.h"
 
 namespace caustica {
 
 RenderLayers::RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums,
-                           PixelFormat format) {
+                           PixelFormat format)
+    : RenderLayers(film, aovs ? aovs->channels() : std::vector<std::string>{},
+                   aovs ? AovSource([aovs](int, int) {
+                     return AovRows{aovs, 0};
+                   })
+                        : AovSource(),
+                   false, variance_known, raw_sums, format) {}
+
+RenderLayers::RenderLayers(const FilmBuffer& film, const FirstHitLayers& layers, bool variance_known, bool raw_sums,
+                           PixelFormat format)
+    : RenderLayers(
+          film, layers.channels(),
+          [&layers, band = std::make_shared<std::optional<FilmBuffer>>()](int y_begin, int y_end) {
+            band->reset();  // before the next band is made, not beside it
+            band->emplace(layers.evaluate(y_begin, y_end));
+            return AovRows{&**band, size_t(y_begin) * size_t((*band)->width())};
+          },
+          true, variance_known, raw_sums, format) {}
+
+RenderLayers::RenderLayers(const FilmBuffer& film, std::vector<std::string> aov_channels, AovSource aovs,
+                           bool evaluated, bool variance_known, bool raw_sums, PixelFormat format)
+    : aov_source_(std::move(aovs)), aovs_evaluated_(evaluated) {
   // Each layer writes its values for one pixel straight into the row.
   std::vector<std::string> names;
-  const auto add = [&](const std::vector<std::string>& channels, std::function<void(size_t, float*)> fill) {
+  const auto add = [&](const std::vector<std::string>& channels, std::function<void(size_t, float*)> fill,
+                       bool from_aovs = false) {
     names.insert(names.end(), channels.begin(), channels.end());
-    layers_.push_back({channels.size(), std::move(fill)});
+    layers_.push_back({channels.size(), std::move(fill), from_aovs && evaluated});
+    if (from_aovs && evaluated) rows_.float_only.insert(rows_.float_only.end(), channels.begin(), channels.end());
   };
   add(film.channels(), [&film](size_t p, float* out) { film.resolve_pixel(p, out); });
-  if (aovs) {
-    add(aovs->channels(), [aovs](size_t p, float* out) { aovs->resolve_pixel(p, out); });
+  if (aov_source_) {
+    add(
+        aov_channels, [this](size_t p, float* out) { aov_rows_.film->resolve_pixel(p - aov_rows_.first_pixel, out); },
+        true);
     if (variance_known)
       add({"variance.R", "variance.G", "variance.B"}, [&film](size_t p, float* out) { film.variance_pixel(p, out); });
     add({"samples.Y"}, [&film](size_t p, float* out) {
@@ -25,7 +52,13 @@ RenderLayers::RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool 
   }
   if (raw_sums) {
     add(film.raw_channels("raw."), [&film](size_t p, float* out) { film.export_raw_pixel(p, out); });
-    if (aovs) add(aovs->raw_channels("raw.aov."), [aovs](size_t p, float* out) { aovs->export_raw_pixel(p, out); });
+    if (aov_source_) {
+      // The raw sums' names need only the channels: a film of one pixel tells them.
+      const FilmBuffer shape(1, 1, aov_channels, FilmBuffer::Moments::None);
+      add(
+          shape.raw_channels("raw.aov."),
+          [this](size_t p, float* out) { aov_rows_.film->export_raw_pixel(p - aov_rows_.first_pixel, out); }, true);
+    }
   }
   const auto at = [&](const char* name) { return int(std::find(names.begin(), names.end(), name) - names.begin()); };
   const int r = at("R"), g = at("G"), b = at("B");
@@ -45,14 +78,30 @@ RenderLayers::RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool 
         out[row - first] = kToXyz[row][0] * pixel[r] + kToXyz[row][1] * pixel[g] + kToXyz[row][2] * pixel[b];
     });
   }
-  const size_t width = size_t(film.width());
-  rows_ = {film.width(), film.height(), std::move(names), [this, width](int y_begin, int y_end, float* out) {
-             for (size_t p = size_t(y_begin) * width; p < size_t(y_end) * width; ++p)
-               for (const Layer& layer : layers_) {
-                 layer.fill(p, out);
-                 out += layer.channels;
-               }
-           }};
+  rows_.width = film.width();
+  rows_.height = film.height();
+  rows_.channels = std::move(names);
+  rows_.fill = [this](int y_begin, int y_end, float* out) { fill(y_begin, y_end, out, true); };
+}
+
+void RenderLayers::fill(int y_begin, int y_end, float* out, bool with_evaluated) const {
+  const bool aovs = aov_source_ && (with_evaluated || !aovs_evaluated_);
+  if (aovs) aov_rows_ = aov_source_(y_begin, y_end);
+  const size_t width = size_t(rows_.width);
+  for (size_t p = size_t(y_begin) * width; p < size_t(y_end) * width; ++p)
+    for (const Layer& layer : layers_) {
+      if (layer.evaluated && !with_evaluated)
+        std::fill_n(out, layer.channels, 0.0f);
+      else
+        layer.fill(p, out);
+      out += layer.channels;
+    }
+}
+
+ExtremeValues RenderLayers::extreme_values() const {
+  ImageRows scan = rows_;
+  scan.fill = [this](int y_begin, int y_end, float* out) { fill(y_begin, y_end, out, false); };
+  return count_extreme_values(scan);
 }
 
 Image RenderLayers::image() const {
@@ -66,7 +115,7 @@ Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool varianc
   return RenderLayers(film, aovs, variance_known, raw_sums).image();
 }
 
-void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,
+void add_raw_channel_lists(const FilmBuffer& film, const std::vector<std::string>& aov_channels,
                            std::map<std::string, std::string>& metadata) {
   const auto list = [](const std::vector<std::string>& names) {
     std::string text;
@@ -74,7 +123,7 @@ void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,
     return text;
   };
   metadata["caustica:raw_channels"] = list(film.channels());
-  if (aovs) metadata["caustica:raw_aov_channels"] = list(aovs->channels());
+  if (!aov_channels.empty()) metadata["caustica:raw_aov_channels"] = list(aov_channels);
 }
 
 std::map<std::string, std::string> render_metadata(const RenderJob& job, const RenderResult& result,
@@ -92,7 +141,10 @@ std::map<std::string, std::string> render_metadata(const RenderJob& job, const R
                                                  {"caustica:interrupted", stats.interrupted ? "true" : "false"},
                                                  {"caustica:version", kVersion}};
   if (!stats.summary.empty()) metadata["caustica:run"] = stats.summary;
-  if (raw_sums) add_raw_channel_lists(result.film, result.aovs ? &*result.aovs : nullptr, metadata);
+  if (raw_sums) {
+    const std::optional<FirstHitLayers> layers = job.first_hit_layers(result);
+    add_raw_channel_lists(result.film, layers ? layers->channels() : std::vector<std::string>{}, metadata);
+  }
   return metadata;
 }
 

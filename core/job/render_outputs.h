@@ -21,20 +21,43 @@ namespace caustica {
 // whole unless image() is called.
 class RenderLayers {
  public:
+  // The first-hit layers come from a film of them (a merge's)...
   RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums,
+               PixelFormat format = PixelFormat::Rgb);
+  // ... or are evaluated a band of rows at a time as rows are asked for (a
+  // render's); rows() then names them in float_only, as extreme_values()
+  // does not evaluate them.
+  RenderLayers(const FilmBuffer& film, const FirstHitLayers& layers, bool variance_known, bool raw_sums,
                PixelFormat format = PixelFormat::Rgb);
   // rows() refers to the object itself.
   RenderLayers(const RenderLayers&) = delete;
   RenderLayers& operator=(const RenderLayers&) = delete;
   const ImageRows& rows() const { return rows_; }
   Image image() const;
+  // The extreme values among the layers, evaluated first-hit layers aside.
+  ExtremeValues extreme_values() const;
 
  private:
+  // The film holding the first-hit layers of rows [y_begin, y_end) and the
+  // index in it of pixel (0, y_begin), as a source makes them ready.
+  struct AovRows {
+    const FilmBuffer* film;
+    size_t first_pixel;
+  };
+  using AovSource = std::function<AovRows(int y_begin, int y_end)>;
+  RenderLayers(const FilmBuffer& film, std::vector<std::string> aov_channels, AovSource aovs, bool evaluated,
+               bool variance_known, bool raw_sums, PixelFormat format);
+  void fill(int y_begin, int y_end, float* out, bool with_evaluated) const;
+
   struct Layer {
     size_t channels;
     std::function<void(size_t pixel, float* out)> fill;
+    bool evaluated = false;  // made by evaluating first-hit layers
   };
   std::vector<Layer> layers_;
+  AovSource aov_source_;
+  bool aovs_evaluated_ = false;
+  mutable AovRows aov_rows_{nullptr, 0};
   ImageRows rows_;
 };
 
@@ -46,8 +69,9 @@ Image render_layers(const FilmBuffer& film, const FilmBuffer* aovs, bool varianc
 std::map<std::string, std::string> render_metadata(const RenderJob& job, const RenderResult& result,
                                                    const std::string& scene_name, bool raw_sums);
 
-// The films' channels in order, for the raw sums of a render.
-void add_raw_channel_lists(const FilmBuffer& film, const FilmBuffer* aovs,
+// The films' channels in order, for the raw sums of a render (no first-hit
+// layers: `aov_channels` empty).
+void add_raw_channel_lists(const FilmBuffer& film, const std::vector<std::string>& aov_channels,
                            std::map<std::string, std::string>& metadata);
 
 }  // namespace caustica

@@ -27,7 +27,6 @@ struct PassRange {
 // Where a pass's values go and what it may use.
 struct PassTarget {
   FilmBuffer& film;
-  FilmBuffer* aovs;  // the standard first-hit layers, or null
   RenderProgress* progress;
   int threads;
   // Polled by passes that trace photons, which can take long before any

@@ -1,15 +1,11 @@
 #include "core/render/iterative_integrator.h"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <stdexcept>
 #include <vector>
 
-#include "core/render/camera_sample.h"
 #include "core/render/renderer.h"
-#include "core/render/sample_scratch.h"
-#include "core/render/standard_aovs.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -37,7 +33,6 @@ class IterativeRun final : public IntegratorRun {
       if (!state_->iterate(i, target.stop)) return false;
       ++iterations_;
       last_ = i;
-      if (target.aovs && i < kAovSamples) add_aovs(i, *target.aovs);
       if (target.progress) target.progress->pixel_samples += uint64_t(film.width()) * film.height();
     }
     return true;
@@ -62,16 +57,6 @@ class IterativeRun final : public IntegratorRun {
   std::string summary() const override { return state_->summary(); }
 
  private:
-  void add_aovs(uint64_t index, FilmBuffer& aovs) const {
-    tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, 0); });
-    tbb::parallel_for(0, aovs.height(), [&](int y) {
-      SampleScratch& s = scratch.local();
-      for (int x = 0; x < aovs.width(); ++x)
-        add_standard_aovs(scene_, sample_camera_ray(scene_, *s.sampler, {x, y}, index, seed_), {{x, y}, index}, aovs,
-                          s.aov_values);
-    });
-  }
-
   const Scene& scene_;
   uint64_t seed_;
   std::unique_ptr<IterationState> state_;

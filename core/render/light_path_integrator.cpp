@@ -10,7 +10,6 @@
 #include "core/render/camera_sample.h"
 #include "core/render/renderer.h"
 #include "core/render/sample_scratch.h"
-#include "core/render/standard_aovs.h"
 #include "core/render/tiles.h"
 #include "core/scene/scene.h"
 
@@ -74,9 +73,6 @@ class LightPathRun final : public IntegratorRun {
           splats.set_source(id);
           const float weight = integrator_.sample(scene_, id, seed_, *s.sampler, s.values, splats);
           target.film.add_sample(id, s.values, weight);
-          if (target.aovs && i < kAovSamples)
-            add_standard_aovs(scene_, sample_camera_ray(scene_, *s.sampler, {x, y}, i, seed_), id, *target.aovs,
-                              s.aov_values);
         }
     if (target.progress) target.progress->pixel_samples += range.count * tile.pixels();
   }

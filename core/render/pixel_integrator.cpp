@@ -10,7 +10,6 @@
 #include "core/render/pass_schedule.h"
 #include "core/render/renderer.h"
 #include "core/render/sample_scratch.h"
-#include "core/render/standard_aovs.h"
 #include "core/render/tiles.h"
 #include "core/scene/scene.h"
 
@@ -42,7 +41,6 @@ class PixelRun final : public IntegratorRun {
               const CameraSample cs = sample_camera_ray(scene_, *s.sampler, {x, y}, i, seed_);
               estimator_->sample(cs.ray, *s.sampler, s.values);
               target.film.add_sample({{x, y}, i}, s.values, cs.weight);
-              if (target.aovs) add_standard_aovs(scene_, cs, {{x, y}, i}, *target.aovs, s.aov_values);
             }
         if (target.progress) target.progress->pixel_samples += range.count * tile.pixels();
       }

@@ -10,12 +10,12 @@
 namespace caustica {
 
 RenderStats render(const Scene& scene, const Integrator& integrator, const RenderOptions& options, FilmBuffer& film,
-                   FilmBuffer* aovs, RenderProgress* progress) {
+                   RenderProgress* progress) {
   const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
   const bool timed = options.time_limit > 0;
   const uint32_t target = timed ? 0 : (options.spp > 0 ? options.spp : scene.sensor().sampler()->sample_count());
-  const uint64_t rays_before = scene.rays_traced(), layer_rays_before = scene.layer_rays_traced();
+  const uint64_t rays_before = scene.rays_traced();
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
@@ -23,7 +23,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
   std::unique_ptr<IntegratorRun> run;
   arena.execute([&] { run = integrator.start(scene, options.seed); });
   const uint32_t max_pass = std::max(1u, run->max_pass_samples());
-  const PassTarget out{film, aovs, progress, threads, options.stop};
+  const PassTarget out{film, progress, threads, options.stop};
   uint32_t done = 0;
   double last_pass = 0;
   uint64_t last_count = 1;
@@ -53,7 +53,6 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
   stats.spp = done;
   stats.samples = uint64_t(done) * film.width() * film.height();
   stats.rays = scene.rays_traced() - rays_before;
-  stats.layer_rays = scene.layer_rays_traced() - layer_rays_before;
   stats.dropped = film.dropped_samples();
   stats.first_dropped = film.first_dropped();
   stats.interrupted = stopped() && (timed || done < target);

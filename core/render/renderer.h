@@ -6,7 +6,6 @@
 
 #include "core/film/film_buffer.h"
 #include "core/render/integrator.h"
-#include "core/render/standard_aovs.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -34,8 +33,7 @@ struct RenderStats {
   double seconds = 0;
   uint32_t spp = 0;
   uint64_t samples = 0;
-  uint64_t rays = 0;        // traced by the integrator
-  uint64_t layer_rays = 0;  // traced again for the first-hit layers
+  uint64_t rays = 0;  // traced by the integrator
   uint64_t dropped = 0;
   SampleId first_dropped;
   bool interrupted = false;
@@ -47,10 +45,9 @@ struct RenderStats {
 // of sample indices first_sample, first_sample + 1, ...; the integrator's
 // family runs each pass. Sample i of pixel p always uses the random numbers
 // keyed by (seed, stream, p, i) and enters the film in index order, so the
-// image is bit-identical for any thread count. `aovs`, if given, receives
-// the standard_aov_channels().
+// image is bit-identical for any thread count.
 RenderStats render(const Scene& scene, const Integrator& integrator, const RenderOptions& options, FilmBuffer& film,
-                   FilmBuffer* aovs = nullptr, RenderProgress* progress = nullptr);
+                   RenderProgress* progress = nullptr);
 
 // Runs one sample alone: a sample replayed under a debugger takes exactly
 // the path it took in the render.

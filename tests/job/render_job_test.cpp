@@ -59,8 +59,10 @@ RenderFile render_range(const LoadedScene& scene, const std::string& integrator,
   settings.seed = seed;
   const RenderJob job(scene, settings);
   const RenderResult r = job.run();
+  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(r);
   return {"range " + std::to_string(first) + "+" + std::to_string(spp),
-          render_layers(r.film, r.aovs ? &*r.aovs : nullptr, r.stats.variance_known, true),
+          first_hit ? RenderLayers(r.film, *first_hit, r.stats.variance_known, true).image()
+                    : render_layers(r.film, nullptr, r.stats.variance_known, true),
           render_metadata(job, r, "glass", true)};
 }
 

@@ -1,13 +1,13 @@
 // The rays a render reports are the integrator's, each once: the first-hit
-// layers re-trace one camera ray per sample of their first kAovSamples and
-// count it apart, so rendering them changes nothing in the integrator's
-// count.
+// layers re-trace one camera ray per sample of their first kAovSamples when
+// the image is written and count it apart, so they change nothing in the
+// integrator's count.
 
 #include <gtest/gtest.h>
 
 #include "core/loader/scene_loader.h"
+#include "core/render/first_hit_layers.h"
 #include "core/render/renderer.h"
-#include "core/render/standard_aovs.h"
 
 namespace caustica {
 namespace {
@@ -17,14 +17,18 @@ TEST(RayCount, FirstHitLayersAreCountedApartFromTheIntegratorsRays) {
   RenderOptions options;
   options.spp = 20;
   options.threads = 2;
-  FilmBuffer plain(8, 8, scene.integrator->channels()), beauty(8, 8, scene.integrator->channels());
-  FilmBuffer layers(8, 8, standard_aov_channels(false));
-  const RenderStats without = render(*scene, *scene.integrator, options, plain);
-  const RenderStats with = render(*scene, *scene.integrator, options, beauty, &layers);
-  EXPECT_EQ(with.rays, without.rays);
-  EXPECT_GT(with.rays, 8u * 8 * 20);  // camera rays, bounces and shadow rays
-  EXPECT_EQ(without.layer_rays, 0u);
-  EXPECT_EQ(with.layer_rays, 8u * 8 * 16);  // the first 16 samples of each of the 64 pixels
+  FilmBuffer beauty(8, 8, scene.integrator->channels());
+  const uint64_t layer_rays_before = scene->layer_rays_traced();
+  const RenderStats stats = render(*scene, *scene.integrator, options, beauty);
+  EXPECT_GT(stats.rays, 8u * 8 * 20);  // camera rays, bounces and shadow rays
+  EXPECT_EQ(scene->layer_rays_traced(), layer_rays_before);
+  const uint64_t rays_before = scene->rays_traced();
+  const FirstHitLayers layers(*scene, options.seed, 0, beauty, 2);
+  const FilmBuffer top = layers.evaluate(0, 5), bottom = layers.evaluate(5, 8);
+  EXPECT_EQ(scene->rays_traced(), rays_before);
+  EXPECT_EQ(scene->layer_rays_traced() - layer_rays_before, 8u * 8 * 16);  // the first 16 samples of 64 pixels
+  EXPECT_EQ(top.height(), 5);
+  EXPECT_EQ(bottom.sample_count({7, 2}), 16u);
 }
 
 }  // namespace

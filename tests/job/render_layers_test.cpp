@@ -1,0 +1,61 @@
+// A render's layers are made a band of rows at a time as the file is
+// written, the first-hit layers evaluated per band: any split into bands
+// must give the image of one band.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/job/render_job.h"
+#include "core/job/render_outputs.h"
+
+namespace caustica {
+namespace {
+
+TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
+  RenderSettings settings;
+  settings.spp = 3;
+  settings.seed = 5;
+  const RenderJob job(load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "8"}}),
+                      settings);
+  const RenderResult result = job.run();
+  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
+  ASSERT_TRUE(first_hit);
+  const RenderLayers layers(result.film, *first_hit, true, true);
+  const Image whole = layers.image();
+  const size_t row = size_t(whole.width) * whole.channels.size();
+  std::vector<float> banded(whole.pixels.size());
+  for (const auto& [begin, end] : {std::pair{0, 3}, {3, 4}, {4, 8}})
+    layers.rows().fill(begin, end, banded.data() + size_t(begin) * row);
+  EXPECT_EQ(banded, whole.pixels);
+  // The albedo of the white walls and boxes is not zero, the layers were evaluated.
+  const int albedo = whole.channel_index("albedo.R");
+  ASSERT_GE(albedo, 0);
+  EXPECT_GT(whole.pixels[4 * row + 4 * whole.channels.size() + size_t(albedo)], 0.1f);
+}
+
+// The first-hit layers are evaluated only to be written: a scan for values
+// out of half's range leaves them out, and a half file keeps them in float.
+TEST(RenderLayers, EvaluatedLayersAreWrittenInFloatAndNotScanned) {
+  RenderSettings settings;
+  settings.spp = 1;
+  const RenderJob job(load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "4"}}),
+                      settings);
+  const RenderResult result = job.run();
+  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
+  ASSERT_TRUE(first_hit);
+  const RenderLayers layers(result.film, *first_hit, true, true);
+  std::vector<std::string> float_only = layers.rows().float_only;
+  std::sort(float_only.begin(), float_only.end());
+  EXPECT_EQ(float_only.size(), 7u + 7 * 3 + 3 + 1);  // resolved, raw sums, raw weight, raw count
+  EXPECT_TRUE(std::binary_search(float_only.begin(), float_only.end(), "depth.T"));
+  EXPECT_FALSE(std::binary_search(float_only.begin(), float_only.end(), "R"));
+  const uint64_t before = job.scene()->layer_rays_traced();
+  layers.extreme_values();
+  EXPECT_EQ(job.scene()->layer_rays_traced(), before);
+  const RenderLayers merged(result.film, static_cast<const FilmBuffer*>(nullptr), true, true);
+  EXPECT_TRUE(merged.rows().float_only.empty());
+}
+
+}  // namespace
+}  // namespace caustica
