@@ -56,6 +56,7 @@ void FilmBuffer::add_splats(const SplatList& list, const ReconstructionFilter& f
   const float r = filter.radius();
   const double norm = 1.0 / (double(filter.integral()) * filter.integral());
   const size_t nc = channels_.size();
+  std::vector<float> fx;  // the filter across the footprint's columns, evaluated once per splat
   for (const Splat& s : list.splats()) {
     // Pixel centres sit at half-integers; these are the ones within r.
     const int y0 = std::max(y_begin, int(std::ceil(s.raster.y - 0.5f - r)));
@@ -63,11 +64,13 @@ void FilmBuffer::add_splats(const SplatList& list, const ReconstructionFilter& f
     if (y0 > y1) continue;
     const int x0 = std::max(0, int(std::ceil(s.raster.x - 0.5f - r)));
     const int x1 = std::min(width_ - 1, int(std::floor(s.raster.x - 0.5f + r)));
+    fx.clear();
+    for (int x = x0; x <= x1; ++x) fx.push_back(filter.eval(s.raster.x - (x + 0.5f)));
     for (int y = y0; y <= y1; ++y) {
       const float fy = filter.eval(s.raster.y - (y + 0.5f));
       if (fy == 0) continue;
       for (int x = x0; x <= x1; ++x) {
-        const double w = norm * fy * filter.eval(s.raster.x - (x + 0.5f));
+        const double w = norm * fy * fx[size_t(x - x0)];
         if (w == 0) continue;
         double* sum = &splat_sum_[index({x, y}) * nc + s.channel];
         sum[0] += w * s.value.r;

@@ -21,7 +21,9 @@ struct Splat {
 // The splats of a run of samples, kept in the order they were made so that
 // the film can add them in a fixed order whatever thread made them. Like the
 // film, it drops non-finite values and remembers which sample made them.
-class SplatList {
+// Threads fill lists that lie side by side; a cache line each keeps them
+// from writing to one another's.
+class alignas(64) SplatList {
  public:
   // The sample whose splats follow, for reporting a dropped one.
   void set_source(SampleId id) { source_ = id; }

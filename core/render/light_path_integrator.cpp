@@ -31,7 +31,12 @@ class LightPathRun final : public IntegratorRun {
   bool run_pass(PassRange range, const PassTarget& target) override {
     target.film.enable_splats();
     tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
-    const size_t chunk = std::max<size_t>(8, 4 * size_t(target.threads));
+    // Tiles are rendered a chunk at a time, then their splats added by bands
+    // of rows. Chunks of many tiles keep every thread busy up to the barrier
+    // (tiles differ in cost); a few bands per thread keep each splat from
+    // being tested against many bands it does not reach.
+    const size_t chunk = std::max<size_t>(8, 32 * size_t(target.threads));
+    const int band = std::max(kTileSize, (target.film.height() + 2 * target.threads - 1) / (2 * target.threads));
     std::vector<SplatList> lists(std::min(chunk, tiles_.size()));
     const ReconstructionFilter& filter = scene_.sensor().film()->filter();
     for (size_t begin = 0; begin < tiles_.size(); begin += chunk) {
@@ -43,7 +48,7 @@ class LightPathRun final : public IntegratorRun {
           render_tile(tiles_[t], range, target, s, lists[t - begin]);
         }
       });
-      tbb::parallel_for(tbb::blocked_range<int>(0, target.film.height(), kTileSize),
+      tbb::parallel_for(tbb::blocked_range<int>(0, target.film.height(), band),
                         [&](const tbb::blocked_range<int>& rows) {
                           for (size_t i = 0; i < end - begin; ++i)
                             target.film.add_splats(lists[i], filter, rows.begin(), rows.end());
