@@ -30,8 +30,6 @@ FirstHitLayers::FirstHitLayers(const Scene& scene, uint64_t seed, uint64_t first
       threads_(threads > 0 ? threads : tbb::this_task_arena::max_concurrency()),
       evaluator_(standard_specs(scene.sensor().film()->output().alpha)) {}
 
-std::vector<std::string> FirstHitLayers::channels(bool alpha) { return AovEvaluator(standard_specs(alpha)).channels(); }
-
 FilmBuffer FirstHitLayers::evaluate(int y_begin, int y_end) const {
   const int width = beauty_.width();
   FilmBuffer band(width, y_end - y_begin, channels(), FilmBuffer::Moments::None);

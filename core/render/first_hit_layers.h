@@ -26,7 +26,6 @@ class FirstHitLayers {
   // `beauty` is the render's film, whose counts say which samples it took.
   FirstHitLayers(const Scene& scene, uint64_t seed, uint64_t first_sample, const FilmBuffer& beauty, int threads);
 
-  static std::vector<std::string> channels(bool alpha);
   std::vector<std::string> channels() const { return evaluator_.channels(); }
   // The layers of rows [y_begin, y_end): a film of width x (y_end - y_begin)
   // pixels without moments, its rows from y_begin on. The rays are counted

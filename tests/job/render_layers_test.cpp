@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
@@ -12,16 +13,32 @@
 namespace caustica {
 namespace {
 
-TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
+// A render of the Cornell box and its first-hit layers.
+struct Rendered {
+  RenderJob job;
+  RenderResult result;
+  std::optional<FirstHitLayers> first_hit;
+};
+
+std::unique_ptr<Rendered> render_box(int res, uint32_t spp) {
   RenderSettings settings;
-  settings.spp = 3;
+  settings.spp = spp;
   settings.seed = 5;
-  const RenderJob job(load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "8"}}),
-                      settings);
-  const RenderResult result = job.run();
-  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
-  ASSERT_TRUE(first_hit);
-  const RenderLayers layers(result.film, *first_hit, true, true);
+  auto r = std::make_unique<Rendered>(Rendered{
+      RenderJob(
+          load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", std::to_string(res)}}),
+          settings),
+      {FilmBuffer(1, 1, {}), {}},
+      std::nullopt});
+  r->result = r->job.run();
+  if (auto layers = r->job.first_hit_layers(r->result)) r->first_hit.emplace(std::move(*layers));
+  return r;
+}
+
+TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
+  const auto r = render_box(8, 3);
+  ASSERT_TRUE(r->first_hit);
+  const RenderLayers layers(r->result.film, *r->first_hit, true, true);
   const Image whole = layers.image();
   const size_t row = size_t(whole.width) * whole.channels.size();
   std::vector<float> banded(whole.pixels.size());
@@ -37,23 +54,18 @@ TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
 // The first-hit layers are evaluated only to be written: a scan for values
 // out of half's range leaves them out, and a half file keeps them in float.
 TEST(RenderLayers, EvaluatedLayersAreWrittenInFloatAndNotScanned) {
-  RenderSettings settings;
-  settings.spp = 1;
-  const RenderJob job(load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "4"}}),
-                      settings);
-  const RenderResult result = job.run();
-  const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
-  ASSERT_TRUE(first_hit);
-  const RenderLayers layers(result.film, *first_hit, true, true);
+  const auto r = render_box(4, 1);
+  ASSERT_TRUE(r->first_hit);
+  const RenderLayers layers(r->result.film, *r->first_hit, true, true);
   std::vector<std::string> float_only = layers.rows().float_only;
   std::sort(float_only.begin(), float_only.end());
   EXPECT_EQ(float_only.size(), 7u + 7 * 3 + 3 + 1);  // resolved, raw sums, raw weight, raw count
   EXPECT_TRUE(std::binary_search(float_only.begin(), float_only.end(), "depth.T"));
   EXPECT_FALSE(std::binary_search(float_only.begin(), float_only.end(), "R"));
-  const uint64_t before = job.scene()->layer_rays_traced();
+  const uint64_t before = r->job.scene()->layer_rays_traced();
   layers.extreme_values();
-  EXPECT_EQ(job.scene()->layer_rays_traced(), before);
-  const RenderLayers merged(result.film, static_cast<const FilmBuffer*>(nullptr), true, true);
+  EXPECT_EQ(r->job.scene()->layer_rays_traced(), before);
+  const RenderLayers merged(r->result.film, static_cast<const FilmBuffer*>(nullptr), true, true);
   EXPECT_TRUE(merged.rows().float_only.empty());
 }
 
