@@ -103,9 +103,17 @@ class PhotonMap {
     return h & mask_;
   }
 
-  std::vector<Photon> photons_;             // grouped by bucket
-  std::vector<uint32_t> start_;             // photons of bucket b: [start_[b], start_[b + 1])
-  std::vector<uint32_t> bucket_of_, next_;  // scratch of build(), kept for the next
+  // build() sorts chunks of kChunk photons into kRanges ranges of buckets
+  // in parallel, then each range.
+  static constexpr size_t kChunk = 16384;
+  static constexpr uint32_t kRanges = 256;
+
+  std::vector<Photon> photons_;  // grouped by bucket
+  std::vector<uint32_t> start_;  // photons of bucket b: [start_[b], start_[b + 1])
+  // Scratch of build(), kept for the next: each photon's bucket, where each
+  // chunk's photons of each range go, where each range starts, and the
+  // photons' indices sorted by range.
+  std::vector<uint32_t> bucket_of_, range_counts_, range_start_, by_range_;
   float radius_ = 0, inv_cell_ = 0;
   uint32_t mask_ = 0;
 };

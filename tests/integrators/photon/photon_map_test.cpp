@@ -4,6 +4,7 @@
 #include "integrators/photon/photon_map.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <random>
@@ -91,6 +92,45 @@ TEST(PhotonMap, RebuildingForgetsThePreviousPhotons) {
     reused.for_each_within(p, [&](const Photon& ph) { a.push_back(ph.depth); });
     fresh.for_each_within(p, [&](const Photon& ph) { b.push_back(ph.depth); });
     EXPECT_EQ(a, b) << "query " << q;
+  }
+}
+
+// The map is built in parallel, chunk by chunk: photons that share a
+// bucket must still come in the order they were stored (sums over them are
+// then the same for any thread count), here across many chunks.
+TEST(PhotonMap, PhotonsOfABucketKeepTheirOrderWhateverTheThreads) {
+  std::vector<Photon> photons(70000);
+  for (size_t i = 0; i < photons.size(); ++i) {
+    photons[i].p = {0.25f, 0.25f, i % 2 ? 0.25f : 40.25f};  // two cells, both crowded
+    photons[i].depth = uint32_t(i);
+  }
+  const auto shuffled = random_photons(50000, 8, 2);
+  for (int threads : {1, 2, 5}) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      const PhotonMap crowded(photons, 0.5f);
+      std::vector<uint32_t> ids;
+      crowded.for_each_within({0.25f, 0.25f, 0.25f}, [&](const Photon& ph) { ids.push_back(ph.depth); });
+      ASSERT_EQ(ids.size(), photons.size() / 2) << threads;
+      for (size_t k = 0; k < ids.size(); ++k) ASSERT_EQ(ids[k], 2 * k + 1) << threads << " threads, photon " << k;
+
+      const PhotonMap map(shuffled, 0.2f);
+      const PhotonMap one_thread = [&] {
+        PhotonMap m;
+        tbb::task_arena single(1);
+        single.execute([&] { m.build(shuffled, 0.2f); });
+        return m;
+      }();
+      std::mt19937 rng(9);
+      std::uniform_real_distribution<float> u(-2, 2);
+      for (int q = 0; q < 100; ++q) {
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        std::vector<uint32_t> a, b;
+        map.for_each_within(p, [&](const Photon& ph) { a.push_back(ph.depth); });
+        one_thread.for_each_within(p, [&](const Photon& ph) { b.push_back(ph.depth); });
+        ASSERT_EQ(a, b) << threads << " threads, query " << q;
+      }
+    });
   }
 }
 
