@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """How a render scales with threads: one scene rendered with 1, 2, ... threads
 (the same seed and samples, so the same image), each `--repeat` times in
 turn, reporting the best samples per second of the render loop (the EXR's

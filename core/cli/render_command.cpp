@@ -128,15 +128,12 @@ int RenderCommand::run() const {
 
   const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(*result);
   const uint64_t layer_rays_before = job.scene()->layer_rays_traced();
-  std::optional<RenderLayers> layers;
-  if (first_hit)
-    layers.emplace(result->film, *first_hit, stats.variance_known, raw_sums_, film.output().pixels);
-  else
-    layers.emplace(result->film, nullptr, stats.variance_known, raw_sums_, film.output().pixels);
+  const RenderLayers layers(result->film, first_hit ? &*first_hit : nullptr, stats.variance_known, raw_sums_,
+                            film.output().pixels);
   std::map<std::string, std::string> metadata = render_metadata(job, *result, scene_, raw_sums_);
   metadata["caustica:develop"] = developer.describe();
   bool half = !raw_sums_ && !plain && (exr_format_.empty() ? film.half_float() : exr_format_ == "half");
-  const ExtremeValues extreme = layers->extreme_values();
+  const ExtremeValues extreme = layers.extreme_values();
   if (half && extreme.beyond_half > 0) {
     half = false;
     std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n",
@@ -147,11 +144,11 @@ int RenderCommand::run() const {
                  "caustica: warning: %zu variance values exceed the float range and are clamped to its largest\n",
                  extreme.at_float_limit);
   if (!plain)
-    write_exr(exr, layers->rows(), metadata, half);
+    write_exr(exr, layers.rows(), metadata, half);
   else if (exr.extension() == ".pfm" && film.output().pixels == PixelFormat::Luminance)
-    write_plain_float(exr, layers->image(), {"Y"});
+    write_plain_float(exr, layers.image(), {"Y"});
   else
-    write_plain_float(exr, layers->image(), {"R", "G", "B"});
+    write_plain_float(exr, layers.image(), {"R", "G", "B"});
   // The picture needs only the beauty: it is resolved again rather than
   // taken from a whole image of every layer.
   const FilmBuffer& beauty = result->film;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -18,11 +19,13 @@ namespace caustica {
 
 namespace {
 
-void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc data_type,
-                     const void* data) {
+// Opens `path` for `spec`, lets `write` write the pixels (whole, or a band
+// of rows at a time) and closes it; any failure names the file.
+void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
+                     const std::function<bool(OIIO::ImageOutput&)>& write) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "': " + OIIO::geterror());
-  if (!out->open(path.string(), spec) || !out->write_image(data_type, data) || !out->close())
+  if (!out->open(path.string(), spec) || !write(*out) || !out->close())
     throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
 }
 
@@ -47,10 +50,12 @@ void write_pfm(const std::filesystem::path& path, int width, int height, int cha
 
 ImageRows rows_of(const Image& image) {
   const size_t row = size_t(image.width) * image.channels.size();
-  return {image.width, image.height, image.channels, [&image, row](int y_begin, int y_end, float* out) {
-            std::copy(image.pixels.begin() + ptrdiff_t(size_t(y_begin) * row),
-                      image.pixels.begin() + ptrdiff_t(size_t(y_end) * row), out);
-          }};
+  ImageRows rows{image.width, image.height, image.channels, {}, {}};
+  rows.fill = [&image, row](int y_begin, int y_end, float* out) {
+    std::copy(image.pixels.begin() + ptrdiff_t(size_t(y_begin) * row),
+              image.pixels.begin() + ptrdiff_t(size_t(y_end) * row), out);
+  };
+  return rows;
 }
 
 namespace {
@@ -100,13 +105,13 @@ void write_exr(const std::filesystem::path& path, const ImageRows& rows,
   spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
   write_atomically(path, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "': " + OIIO::geterror());
-    bool ok = out->open(tmp.string(), spec);
-    for_each_band(rows, [&](int y, int end, std::span<const float> values) {
-      ok = ok && out->write_scanlines(y, end, 0, OIIO::TypeDesc::FLOAT, values.data());
+    write_with_oiio(tmp, spec, [&](OIIO::ImageOutput& out) {
+      bool ok = true;
+      for_each_band(rows, [&](int y, int end, std::span<const float> values) {
+        ok = ok && out.write_scanlines(y, end, 0, OIIO::TypeDesc::FLOAT, values.data());
+      });
+      return ok;
     });
-    if (!ok || !out->close()) throw std::runtime_error("cannot write '" + tmp.string() + "': " + out->geterror());
   });
 }
 
@@ -132,7 +137,8 @@ void write_plain_float(const std::filesystem::path& path, const Image& image,
     if (path.extension() == ".pfm")
       write_pfm(tmp, image.width, image.height, int(n), data.data());
     else
-      write_with_oiio(tmp, spec, OIIO::TypeDesc::FLOAT, data.data());
+      write_with_oiio(tmp, spec,
+                      [&](OIIO::ImageOutput& out) { return out.write_image(OIIO::TypeDesc::FLOAT, data.data()); });
   });
 }
 
@@ -162,22 +168,22 @@ void write_png(const std::filesystem::path& path, int width, int height, const s
   // Quantised a band of rows at a time: no second whole image beside the first.
   const int band = std::max(1, (1 << 18) / std::max(1, 3 * width));
   write_atomically(path, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "': " + OIIO::geterror());
-    bool ok = out->open(tmp.string(), spec);
-    std::vector<uint8_t> bytes;
-    for (int y = 0; ok && y < height; y += band) {
-      const int end = std::min(height, y + band);
-      const std::span<const float> rows(display_rgb.data() + size_t(y) * width * 3, size_t(end - y) * width * 3);
-      const std::vector<uint16_t> q = quantize(rows, width, bits, y);
-      if (bits == 16) {
-        ok = out->write_scanlines(y, end, 0, type, q.data());
-      } else {
-        bytes.assign(q.begin(), q.end());
-        ok = out->write_scanlines(y, end, 0, type, bytes.data());
+    write_with_oiio(tmp, spec, [&](OIIO::ImageOutput& out) {
+      bool ok = true;
+      std::vector<uint8_t> bytes;
+      for (int y = 0; ok && y < height; y += band) {
+        const int end = std::min(height, y + band);
+        const std::span<const float> rows(display_rgb.data() + size_t(y) * width * 3, size_t(end - y) * width * 3);
+        const std::vector<uint16_t> q = quantize(rows, width, bits, y);
+        if (bits == 16) {
+          ok = out.write_scanlines(y, end, 0, type, q.data());
+        } else {
+          bytes.assign(q.begin(), q.end());
+          ok = out.write_scanlines(y, end, 0, type, bytes.data());
+        }
       }
-    }
-    if (!ok || !out->close()) throw std::runtime_error("cannot write '" + tmp.string() + "': " + out->geterror());
+      return ok;
+    });
   });
 }
 

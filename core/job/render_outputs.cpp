@@ -17,15 +17,16 @@ RenderLayers::RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool 
                         : AovSource(),
                    false, variance_known, raw_sums, format) {}
 
-RenderLayers::RenderLayers(const FilmBuffer& film, const FirstHitLayers& layers, bool variance_known, bool raw_sums,
+RenderLayers::RenderLayers(const FilmBuffer& film, const FirstHitLayers* layers, bool variance_known, bool raw_sums,
                            PixelFormat format)
     : RenderLayers(
-          film, layers.channels(),
-          [&layers, band = std::make_shared<std::optional<FilmBuffer>>()](int y_begin, int y_end) {
+          film, layers ? layers->channels() : std::vector<std::string>{},
+          layers ? AovSource([layers, band = std::make_shared<std::optional<FilmBuffer>>()](int y_begin, int y_end) {
             band->reset();  // before the next band is made, not beside it
-            band->emplace(layers.evaluate(y_begin, y_end));
+            band->emplace(layers->evaluate(y_begin, y_end));
             return AovRows{&**band, size_t(y_begin) * size_t((*band)->width())};
-          },
+          })
+                 : AovSource(),
           true, variance_known, raw_sums, format) {}
 
 RenderLayers::RenderLayers(const FilmBuffer& film, std::vector<std::string> aov_channels, AovSource aovs,

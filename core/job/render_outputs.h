@@ -25,9 +25,9 @@ class RenderLayers {
   RenderLayers(const FilmBuffer& film, const FilmBuffer* aovs, bool variance_known, bool raw_sums,
                PixelFormat format = PixelFormat::Rgb);
   // ... or are evaluated a band of rows at a time as rows are asked for (a
-  // render's); rows() then names them in float_only, as extreme_values()
-  // does not evaluate them.
-  RenderLayers(const FilmBuffer& film, const FirstHitLayers& layers, bool variance_known, bool raw_sums,
+  // render's; none if null); rows() then names them in float_only, as
+  // extreme_values() does not evaluate them.
+  RenderLayers(const FilmBuffer& film, const FirstHitLayers* layers, bool variance_known, bool raw_sums,
                PixelFormat format = PixelFormat::Rgb);
   // rows() refers to the object itself.
   RenderLayers(const RenderLayers&) = delete;

@@ -14,8 +14,7 @@ namespace {
 
 class IterativeRun final : public IntegratorRun {
  public:
-  IterativeRun(const Scene& scene, uint64_t seed, std::unique_ptr<IterationState> state)
-      : scene_(scene), seed_(seed), state_(std::move(state)) {}
+  IterativeRun(const Scene& scene, std::unique_ptr<IterationState> state) : scene_(scene), state_(std::move(state)) {}
 
   uint32_t max_pass_samples() const override { return 1; }
   bool variance_known() const override { return false; }
@@ -58,7 +57,6 @@ class IterativeRun final : public IntegratorRun {
 
  private:
   const Scene& scene_;
-  uint64_t seed_;
   std::unique_ptr<IterationState> state_;
   uint32_t iterations_ = 0;
   uint64_t last_ = 0;
@@ -67,7 +65,7 @@ class IterativeRun final : public IntegratorRun {
 }  // namespace
 
 std::unique_ptr<IntegratorRun> IterativeIntegrator::start(const Scene& scene, uint64_t seed) const {
-  return std::make_unique<IterativeRun>(scene, seed, begin(scene, seed));
+  return std::make_unique<IterativeRun>(scene, begin(scene, seed));
 }
 
 }  // namespace caustica

@@ -61,8 +61,7 @@ RenderFile render_range(const LoadedScene& scene, const std::string& integrator,
   const RenderResult r = job.run();
   const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(r);
   return {"range " + std::to_string(first) + "+" + std::to_string(spp),
-          first_hit ? RenderLayers(r.film, *first_hit, r.stats.variance_known, true).image()
-                    : render_layers(r.film, nullptr, r.stats.variance_known, true),
+          RenderLayers(r.film, first_hit ? &*first_hit : nullptr, r.stats.variance_known, true).image(),
           render_metadata(job, r, "glass", true)};
 }
 

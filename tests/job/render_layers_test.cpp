@@ -38,7 +38,7 @@ std::unique_ptr<Rendered> render_box(int res, uint32_t spp) {
 TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
   const auto r = render_box(8, 3);
   ASSERT_TRUE(r->first_hit);
-  const RenderLayers layers(r->result.film, *r->first_hit, true, true);
+  const RenderLayers layers(r->result.film, &*r->first_hit, true, true);
   const Image whole = layers.image();
   const size_t row = size_t(whole.width) * whole.channels.size();
   std::vector<float> banded(whole.pixels.size());
@@ -56,7 +56,7 @@ TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
 TEST(RenderLayers, EvaluatedLayersAreWrittenInFloatAndNotScanned) {
   const auto r = render_box(4, 1);
   ASSERT_TRUE(r->first_hit);
-  const RenderLayers layers(r->result.film, *r->first_hit, true, true);
+  const RenderLayers layers(r->result.film, &*r->first_hit, true, true);
   std::vector<std::string> float_only = layers.rows().float_only;
   std::sort(float_only.begin(), float_only.end());
   EXPECT_EQ(float_only.size(), 7u + 7 * 3 + 3 + 1);  // resolved, raw sums, raw weight, raw count

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
 
 namespace caustica {
 namespace {
@@ -21,6 +22,21 @@ std::vector<Photon> random_photons(int n, uint32_t seed, float extent) {
     photons[i].depth = uint32_t(i);  // an id
   }
   return photons;
+}
+
+// Both maps answer random queries within `extent` alike, photon for photon
+// and in the same order.
+void expect_same_answers(const PhotonMap& a, const PhotonMap& b, uint32_t seed, float extent, int queries,
+                         const std::string& what) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-extent, extent);
+  for (int q = 0; q < queries; ++q) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    std::vector<uint32_t> from_a, from_b;
+    a.for_each_within(p, [&](const Photon& ph) { from_a.push_back(ph.depth); });
+    b.for_each_within(p, [&](const Photon& ph) { from_b.push_back(ph.depth); });
+    EXPECT_EQ(from_a, from_b) << what << ", query " << q;
+  }
 }
 
 TEST(PhotonMap, RadiusQueryFindsExactlyThePhotonsWithinReach) {
@@ -84,15 +100,7 @@ TEST(PhotonMap, RebuildingForgetsThePreviousPhotons) {
   const PhotonMap fresh(second, 0.3f);
   EXPECT_EQ(reused.size(), second.size());
   EXPECT_EQ(reused.radius(), 0.3f);
-  std::mt19937 rng(6);
-  std::uniform_real_distribution<float> u(-3, 3);
-  for (int q = 0; q < 200; ++q) {
-    const Vec3 p{u(rng), u(rng), u(rng)};
-    std::vector<uint32_t> a, b;
-    reused.for_each_within(p, [&](const Photon& ph) { a.push_back(ph.depth); });
-    fresh.for_each_within(p, [&](const Photon& ph) { b.push_back(ph.depth); });
-    EXPECT_EQ(a, b) << "query " << q;
-  }
+  expect_same_answers(reused, fresh, 6, 3, 200, "rebuilt");
 }
 
 // The map is built in parallel, chunk by chunk: photons that share a
@@ -121,15 +129,7 @@ TEST(PhotonMap, PhotonsOfABucketKeepTheirOrderWhateverTheThreads) {
         single.execute([&] { m.build(shuffled, 0.2f); });
         return m;
       }();
-      std::mt19937 rng(9);
-      std::uniform_real_distribution<float> u(-2, 2);
-      for (int q = 0; q < 100; ++q) {
-        const Vec3 p{u(rng), u(rng), u(rng)};
-        std::vector<uint32_t> a, b;
-        map.for_each_within(p, [&](const Photon& ph) { a.push_back(ph.depth); });
-        one_thread.for_each_within(p, [&](const Photon& ph) { b.push_back(ph.depth); });
-        ASSERT_EQ(a, b) << threads << " threads, query " << q;
-      }
+      expect_same_answers(map, one_thread, 9, 2, 100, std::to_string(threads) + " threads");
     });
   }
 }
