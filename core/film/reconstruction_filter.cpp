@@ -23,12 +23,20 @@ void ReconstructionFilter::init(float radius) {
     cdf_[i + 1] = cdf_[i] + cell_[i];
   }
   if (!(cdf_.back() > 0)) throw std::invalid_argument("reconstruction filter integrates to zero");
+  guide_.resize(kCells);
+  for (int g = 0; g < kCells; ++g) {
+    // Float products are monotonic in u, so every target of slice g is at
+    // least this one, and the scan may start from its cell.
+    const float slice_start = float(g) / kCells * cdf_.back();
+    guide_[g] = std::max(int(std::upper_bound(cdf_.begin(), cdf_.end(), slice_start) - cdf_.begin()) - 1, 0);
+  }
 }
 
 float ReconstructionFilter::sample_1d(float u, float* weight) const {
   const float target = u * cdf_.back();
-  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), target);
-  const int i = std::clamp(int(it - cdf_.begin()) - 1, 0, kCells - 1);
+  int above = guide_[std::clamp(int(u * kCells), 0, kCells - 1)] + 1;
+  while (above <= kCells && cdf_[above] <= target) ++above;
+  const int i = std::clamp(above - 1, 0, kCells - 1);
   const float width = 2 * radius_ / kCells;
   const float frac = cell_[i] > 0 ? (target - cdf_[i]) / cell_[i] : 0.5f;
   const float x = -radius_ + (i + std::clamp(frac, 0.0f, 1.0f)) * width;

@@ -35,6 +35,10 @@ class ReconstructionFilter : public Plugin {
   float radius_ = 0.5f;
   std::vector<float> cdf_;  // piecewise-linear CDF of |f| over equal cells
   std::vector<float> cell_;
+  // For each of kCells equal slices of [0, integral), the last cell whose CDF
+  // lies at or below the slice's start: sampling scans a cell or two from
+  // there instead of a binary search, and finds the same cell.
+  std::vector<int> guide_;
 };
 
 }  // namespace caustica

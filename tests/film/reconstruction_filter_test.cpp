@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/registry/properties.h"
 #include "tests/support/chi2.h"
@@ -48,6 +50,35 @@ TEST_P(Filter, WeightsNormaliseAndSamplesFollowTheFilter) {
       {.sample_count = 400000, .bins_u = 20, .bins_v = 20, .seed = 5});
   // 1% significance, Sidak-corrected over the three filters.
   EXPECT_GT(result.p_value, test::sidak_alpha(0.01, 3)) << result.report;
+}
+
+// Sampling inverts the CDF of |f|: the offset drawn for u has a fraction u
+// of the filter's mass below it (integrated here by the midpoint rule, not
+// from the sampler's tables), and grows with u, also across the cells a
+// sample's search starts from.
+TEST_P(Filter, OffsetsInvertTheCdf) {
+  const auto filter = make_filter(GetParam());
+  const float r = filter->radius();
+  const int steps = 200000;
+  std::vector<double> cdf(steps + 1, 0);
+  for (int i = 0; i < steps; ++i) cdf[i + 1] = cdf[i] + std::abs(filter->eval(-r + (i + 0.5f) * 2 * r / steps));
+  const auto mass_below = [&](float x) {
+    const double t = std::clamp((double(x) + r) / (2 * r) * steps, 0.0, double(steps));
+    const int i = std::min(int(t), steps - 1);
+    return (cdf[i] + (t - i) * (cdf[i + 1] - cdf[i])) / cdf[steps];
+  };
+  std::vector<float> us;
+  for (int i = 0; i < 4096; ++i) us.push_back((i + 0.5f) / 4096);
+  for (int g = 1; g < 256; ++g)
+    for (float u : {float(g) / 256, std::nextafter(float(g) / 256, 0.0f)}) us.push_back(u);
+  std::sort(us.begin(), us.end());
+  float previous = -r;
+  for (float u : us) {
+    const float x = filter->sample({u, 0.5f}).offset.x;
+    EXPECT_NEAR(mass_below(x), u, 2e-3) << "u = " << u;
+    EXPECT_GE(x, previous) << "u = " << u;
+    previous = x;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFilters, Filter, testing::Values("box", "tent", "gaussian"));
