@@ -13,7 +13,7 @@ namespace {
 
 // Dimensions one sample may consume before it would run into the next
 // sample's stream; far beyond any path's needs.
-constexpr uint64_t kDimensionsPerSample = uint64_t(1) << 20;
+constexpr Pcg32::Jump kDimensionsPerSample = Pcg32::jump(uint64_t(1) << 20);
 
 class IndependentSampler final : public Sampler {
  public:
@@ -29,7 +29,7 @@ class IndependentSampler final : public Sampler {
                            ? key.key
                            : mix_bits(key.key ^ mix_bits(uint64_t(key.stream) * 0xd1b54a32d192ed03ULL));
     rng_.seed(mix_bits(k ^ mix_bits(seed + uint64_t(seed_))), mix_bits(k + 0x9e3779b97f4a7c15ULL));
-    rng_.advance(sample_index * kDimensionsPerSample);
+    rng_.advance(sample_index, kDimensionsPerSample);
   }
 
   float next_1d() override { return rng_.next_float(); }

@@ -24,7 +24,7 @@ class Pcg32 {
 
   uint32_t next_u32() {
     const uint64_t old = state_;
-    state_ = old * kMultiplier + inc_;
+    state_ = old * kStep.mult + inc_;
     const auto xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
     const auto rot = uint32_t(old >> 59u);
     return (xorshifted >> rot) | (xorshifted << ((~rot + 1u) & 31));
@@ -33,24 +33,41 @@ class Pcg32 {
   // Uniform in [0, 1): the top 24 bits, so every value is exactly representable.
   float next_float() { return float(next_u32() >> 8) * 0x1p-24f; }
 
+  // `steps` steps of the generator as one affine map of the state:
+  // state -> mult * state + plus_per_inc * inc (all modulo 2^64).
+  struct Jump {
+    uint64_t mult, plus_per_inc;
+  };
+  static constexpr Jump kStep{0x5851f42d4c957f2dULL, 1};
+  static constexpr Jump jump(uint64_t steps) { return compose(kStep, steps); }
+
   // Jumps `delta` steps ahead in O(log delta) (Brown, "Random number
   // generation with arbitrary strides", 1994).
-  void advance(uint64_t delta) {
-    uint64_t mult = kMultiplier, plus = inc_, acc_mult = 1, acc_plus = 0;
-    while (delta > 0) {
-      if (delta & 1) {
+  void advance(uint64_t delta) { advance(delta, kStep); }
+  // Jumps `count` times `stride` ahead, in O(log count): with the stride's
+  // map computed once, a sample's skip-ahead costs the bits of its index
+  // rather than those of index times stride.
+  void advance(uint64_t count, Jump stride) {
+    const Jump j = compose(stride, count);
+    state_ = j.mult * state_ + j.plus_per_inc * inc_;
+  }
+
+ private:
+  // `j` applied `count` times, by squaring.
+  static constexpr Jump compose(Jump j, uint64_t count) {
+    uint64_t mult = j.mult, plus = j.plus_per_inc, acc_mult = 1, acc_plus = 0;
+    while (count > 0) {
+      if (count & 1) {
         acc_mult *= mult;
         acc_plus = acc_plus * mult + plus;
       }
       plus = (mult + 1) * plus;
       mult *= mult;
-      delta /= 2;
+      count /= 2;
     }
-    state_ = acc_mult * state_ + acc_plus;
+    return {acc_mult, acc_plus};
   }
 
- private:
-  static constexpr uint64_t kMultiplier = 0x5851f42d4c957f2dULL;
   uint64_t state_ = 0, inc_ = 0;
 };
 

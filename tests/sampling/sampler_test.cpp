@@ -33,6 +33,19 @@ TEST(Pcg32, AdvanceMatchesStepping) {
   EXPECT_EQ(a.next_u32(), b.next_u32());
 }
 
+TEST(Pcg32, StridedAdvanceMatchesStepping) {
+  Pcg32 a(42, 54), b(42, 54), c(42, 54);
+  for (int i = 0; i < 3 * 37; ++i) a.next_u32();
+  b.advance(3, Pcg32::jump(37));
+  c.advance(uint64_t(5) << 40);
+  Pcg32 d(42, 54);
+  d.advance(uint64_t(5) << 20, Pcg32::jump(uint64_t(1) << 20));
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(a.next_u32(), b.next_u32());
+    EXPECT_EQ(c.next_u32(), d.next_u32());
+  }
+}
+
 // What every sampler promises, checked for each.
 class EverySampler : public testing::TestWithParam<const char*> {
  protected:
