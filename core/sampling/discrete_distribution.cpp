@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/math/branchless_upper_bound.h"
 #include "core/math/constants.h"
 
 namespace caustica {
@@ -41,8 +42,7 @@ int DiscreteDistribution::sample(float u, float* pmf, float* u_remapped) const {
   u = std::clamp(u, 0.0f, kOneMinusEpsilon);
   // The first CDF entry above u closes the interval that holds u; runs of
   // equal entries (zero weights) are skipped by the strict comparison.
-  const auto upper = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  const int i = static_cast<int>(upper - cdf_.begin()) - 1;
+  const int i = static_cast<int>(branchless_upper_bound(cdf_, u)) - 1;
   if (pmf) *pmf = pmf_[i];
   if (u_remapped) {
     const float lo = cdf_[i], hi = cdf_[i + 1];
