@@ -9,7 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev libpugixml-dev libassimp-dev libfmt-dev zlib1g-dev
+  libcli11-dev libpugixml-dev libtinyobjloader-dev libfmt-dev zlib1g-dev
   # tests/fuzz: libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer
   clang libclang-rt-14-dev
   # bench/: the convergence suite reads EXRs and plots from Python

@@ -1,6 +1,7 @@
 // obj, ply, serialized: triangle meshes read from a file (OBJ through
-// Assimp; PLY by caustica's own reader, as Assimp crashes and hangs on
-// damaged PLY files; Mitsuba's serialized format through zlib).
+// tinyobjloader; PLY by caustica's own reader, as Assimp, Debian's PLY
+// library, crashes and hangs on damaged files; Mitsuba's serialized
+// format through zlib).
 //
 // Polygons are triangulated. A mesh without vertex normals gets smooth
 // ones, as Mitsuba gives it; face_normals (or a serialized mesh's own flag)
@@ -14,17 +15,13 @@
 //       <integer name="shape_index" value="2"/>
 //   </shape>
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
-#include <assimp/Importer.hpp>
-#include <assimp/ProgressHandler.hpp>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "core/errors/interrupted.h"
 #include "core/registry/properties.h"
+#include "core/shapes/obj_reader.h"
 #include "core/shapes/ply_reader.h"
 #include "core/shapes/serialized_reader.h"
 #include "core/shapes/triangle_mesh.h"
@@ -40,54 +37,7 @@ std::filesystem::path mesh_file(const Properties& props) {
   return file;
 }
 
-// Lets a stop request end Assimp's import at its next progress report.
-class StopOnRequest final : public Assimp::ProgressHandler {
- public:
-  bool Update(float) override { return !stop_request().load(); }
-};
-
-MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
-  const std::filesystem::path file = mesh_file(props);
-  Assimp::Importer importer;
-  importer.SetProgressHandler(new StopOnRequest);  // the importer owns it
-  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
-  if (stop_request().load()) throw Interrupted("interrupted");
-  if (!scene)
-    throw props.error("filename", "cannot read mesh file '" + file.string() + "': " + importer.GetErrorString());
-
-  MeshData mesh;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* in = scene->mMeshes[m];
-    if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    const auto base = uint32_t(mesh.positions.size());
-    for (unsigned v = 0; v < in->mNumVertices; ++v) {
-      mesh.positions.emplace_back(in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z);
-      if (in->HasNormals()) mesh.normals.emplace_back(in->mNormals[v].x, in->mNormals[v].y, in->mNormals[v].z);
-      if (in->HasTextureCoords(0)) {
-        const aiVector3D t = in->mTextureCoords[0][v];
-        mesh.uvs.emplace_back(t.x, flip_tex_coords ? 1 - t.y : t.y);
-      }
-    }
-    for (unsigned f = 0; f < in->mNumFaces; ++f) {
-      if (in->mFaces[f].mNumIndices != 3) continue;
-      for (int k = 0; k < 3; ++k) {
-        const unsigned index = in->mFaces[f].mIndices[k];
-        if (index >= in->mNumVertices)
-          throw props.error("filename", "mesh file '" + file.string() + "': face " + std::to_string(f) +
-                                            " refers to vertex " + std::to_string(int64_t(int32_t(index))) +
-                                            ", but the mesh has " + std::to_string(in->mNumVertices) + " vertices");
-        mesh.indices.push_back(base + index);
-      }
-    }
-  }
-  // Attributes only some sub-meshes carry cannot be interpolated consistently.
-  if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
-  if (mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
-  return mesh;
-}
-
-// A mesh by one of caustica's own readers, from the file's bytes; its
-// errors name the file.
+// A mesh read from the file's bytes by `parse`; its errors name the file.
 template <class Parse>
 MeshData read_own_format(const Properties& props, const Parse& parse) {
   const std::filesystem::path file = mesh_file(props);
@@ -99,17 +49,26 @@ MeshData read_own_format(const Properties& props, const Parse& parse) {
   in.read(bytes.data(), std::streamsize(bytes.size()));
   if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
   try {
-    return parse(std::string_view(bytes));
+    return parse(bytes);
   } catch (const MeshFormatError& e) {
     throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
   }
 }
 
-MeshData read_ply_file(const Properties& props, bool flip_tex_coords) {
-  MeshData mesh = read_own_format(props, [](std::string_view bytes) { return read_ply(bytes); });
-  if (flip_tex_coords)
+MeshData flipped_tex_coords(MeshData mesh, bool flip) {
+  if (flip)
     for (Vec2& uv : mesh.uvs) uv.y = 1 - uv.y;
   return mesh;
+}
+
+MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
+  return flipped_tex_coords(read_own_format(props, [](const std::string& text) { return read_obj(text); }),
+                            flip_tex_coords);
+}
+
+MeshData read_ply_file(const Properties& props, bool flip_tex_coords) {
+  return flipped_tex_coords(read_own_format(props, [](std::string_view bytes) { return read_ply(bytes); }),
+                            flip_tex_coords);
 }
 
 MeshData read_serialized_file(const Properties& props) {

@@ -663,5 +663,15 @@ TEST(SceneLoader, PlyFaceIndicesOutOfRangeAreRefused) {
   }
 }
 
+// The same for an OBJ file: the error names the file and the face's line.
+TEST(SceneLoader, ObjFaceIndicesOutOfRangeAreRefused) {
+  const auto file = std::filesystem::temp_directory_path() / "caustica_bad.obj";
+  std::ofstream(file) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 4\n";
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='obj'><string name='filename' value='" +
+                               file.string() + "'/></shape></scene>"),
+              HasSubstr("test.xml:1: parameter 'filename' of shape 'obj': mesh file '" + file.string() +
+                        "': line 5: face refers to vertex 4 (counting from 1), but the file defines 3"));
+}
+
 }  // namespace
 }  // namespace caustica
