@@ -78,40 +78,60 @@ MeshData read_obj(const std::string& text) {
                normals = attrib.normals.size() / 3;
 
   MeshData mesh;
-  std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
-  bool every_uv = true, every_normal = true;
+  bool every_uv = uvs > 0, every_normal = normals > 0;
+  std::vector<Corner> corner_of_vertex;
+  const auto add_vertex = [&](const Corner& c) {
+    const float* p = &attrib.vertices[3 * size_t(c.v)];
+    mesh.positions.emplace_back(p[0], p[1], p[2]);
+    corner_of_vertex.push_back(c);
+    every_uv = every_uv && c.vt >= 0;
+    every_normal = every_normal && c.vn >= 0;
+    if (every_uv) mesh.uvs.emplace_back(attrib.texcoords[2 * size_t(c.vt)], attrib.texcoords[2 * size_t(c.vt) + 1]);
+    if (every_normal) {
+      const float* n = &attrib.normals[3 * size_t(c.vn)];
+      mesh.normals.emplace_back(n[0], n[1], n[2]);
+    }
+    return uint32_t(mesh.positions.size() - 1);
+  };
+  // Most positions come with one texture/normal pair throughout: the first
+  // vertex made from each position is found by index, and only positions
+  // met with several pairs (hard edges, uv seams) go through a hash map.
+  constexpr uint32_t kNone = ~0u;
+  std::vector<uint32_t> first_of_position(positions, kNone);
+  std::unordered_map<Corner, uint32_t, CornerHash> other_vertices;
   const auto vertex = [&](const tinyobj::index_t& index) {
     const Corner corner{index.vertex_index, index.texcoord_index, index.normal_index};
-    const auto [it, fresh] = vertex_of.try_emplace(corner, uint32_t(mesh.positions.size()));
-    if (fresh) {
-      const float* p = &attrib.vertices[3 * size_t(corner.v)];
-      mesh.positions.emplace_back(p[0], p[1], p[2]);
-      every_uv = every_uv && corner.vt >= 0;
-      every_normal = every_normal && corner.vn >= 0;
-      const float* t = corner.vt >= 0 ? &attrib.texcoords[2 * size_t(corner.vt)] : nullptr;
-      mesh.uvs.push_back(t ? Vec2(t[0], t[1]) : Vec2());
-      const float* n = corner.vn >= 0 ? &attrib.normals[3 * size_t(corner.vn)] : nullptr;
-      mesh.normals.push_back(n ? Vec3(n[0], n[1], n[2]) : Vec3());
-    }
+    uint32_t& first = first_of_position[size_t(corner.v)];
+    if (first == kNone) return first = add_vertex(corner);
+    if (corner_of_vertex[first] == corner) return first;
+    const auto [it, fresh] = other_vertices.try_emplace(corner, 0);
+    if (fresh) it->second = add_vertex(corner);
     return it->second;
   };
+  std::vector<uint32_t> face_vertices;
   size_t face = 0;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const std::vector<tinyobj::index_t>& corners = shape.mesh.indices;
     size_t first = 0;
     for (const unsigned count : shape.mesh.num_face_vertices) {
       if (face % 4096 == 0 && stop_request().load()) throw Interrupted("interrupted");
-      for (size_t k = 0; k < count; ++k) check_corner(corners[first + k], positions, uvs, normals, text, face);
       // Faces of fewer than three corners enclose no area.
-      for (size_t k = 1; k + 1 < count; ++k)
-        mesh.indices.insert(mesh.indices.end(),
-                            {vertex(corners[first]), vertex(corners[first + k]), vertex(corners[first + k + 1])});
+      if (count >= 3) {
+        face_vertices.clear();
+        for (size_t k = 0; k < count; ++k) {
+          check_corner(corners[first + k], positions, uvs, normals, text, face);
+          face_vertices.push_back(vertex(corners[first + k]));
+        }
+        for (size_t k = 1; k + 1 < count; ++k)
+          mesh.indices.insert(mesh.indices.end(), {face_vertices[0], face_vertices[k], face_vertices[k + 1]});
+      }
       first += count;
       ++face;
     }
   }
-  if (!every_uv) mesh.uvs.clear();
-  if (!every_normal) mesh.normals.clear();
+  // Attributes only some corners carry are dropped with their memory.
+  if (!every_uv) std::vector<Vec2>().swap(mesh.uvs);
+  if (!every_normal) std::vector<Vec3>().swap(mesh.normals);
   return mesh;
 }
 
