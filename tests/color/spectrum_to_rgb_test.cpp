@@ -17,6 +17,7 @@
 #include <fstream>
 
 #include "core/color/cie_tables.h"
+#include "tests/support/thrown_message.h"
 
 namespace caustica {
 namespace {
@@ -109,12 +110,7 @@ TEST(SpectrumToRgb, ABlackBodyPeaksWhereWienSays) {
 
 TEST(SpectrumToRgb, BadSpectraAreRefusedWithTheReason) {
   const auto error = [](const std::string& text) {
-    try {
-      parse_spectrum_pairs(text);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::thrown_message<std::invalid_argument>([&] { parse_spectrum_pairs(text); });
   };
   EXPECT_EQ(error("400:0.3, 390:0.4"), "wavelengths must increase, but 390.000000 nm follows 400.000000 nm");
   EXPECT_EQ(error("400:0.3, 500-0.4"), "expected wavelength:value, got ' 500-0.4'");

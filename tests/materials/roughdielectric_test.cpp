@@ -11,6 +11,7 @@
 #include "tests/support/bsdf_checks.h"
 #include "tests/support/chi2.h"
 #include "tests/support/microfacet_oracle.h"
+#include "tests/support/thrown_message.h"
 #include "tests/support/z_test.h"
 
 namespace caustica {
@@ -280,12 +281,8 @@ TEST(RoughDielectricBsdf, FiniteAtExtremes) {
 
 TEST(RoughDielectricBsdf, BadParameters) {
   const auto error_of = [](const std::string& params) {
-    try {
-      test::make_bsdf("<bsdf type='roughdielectric'>" + params + "</bsdf>");
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::thrown_message<SceneError>(
+        [&] { test::make_bsdf("<bsdf type='roughdielectric'>" + params + "</bsdf>"); });
   };
   EXPECT_THAT(error_of("<string name='distribution' value='phong'/>"), testing::HasSubstr("beckmann or ggx"));
   EXPECT_THAT(error_of("<float name='alpha_u' value='0.2'/>"), testing::HasSubstr("alpha_u and alpha_v"));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors/interrupted.h"
+#include "tests/support/thrown_message.h"
 
 namespace caustica {
 namespace {
@@ -11,12 +12,7 @@ namespace {
 using ::testing::HasSubstr;
 
 std::string obj_error(const std::string& text) {
-  try {
-    read_obj(text);
-  } catch (const ObjError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::thrown_message<ObjError>([&] { read_obj(text); });
 }
 
 std::vector<uint32_t> indices(std::initializer_list<uint32_t> list) { return list; }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/errors/interrupted.h"
+#include "tests/support/thrown_message.h"
 
 namespace caustica {
 namespace {
@@ -18,12 +19,7 @@ const std::string kTriangleHeader =
     "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
 
 std::string ply_error(const std::string& bytes) {
-  try {
-    read_ply(bytes);
-  } catch (const PlyError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::thrown_message<PlyError>([&] { read_ply(bytes); });
 }
 
 TEST(PlyReader, ReadsAsciiPolygonsAsFansWithNormalsAndTextureCoordinates) {

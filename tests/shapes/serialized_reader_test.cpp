@@ -7,6 +7,7 @@
 
 #include "core/errors/interrupted.h"
 #include "tests/support/serialized_file.h"
+#include "tests/support/thrown_message.h"
 
 namespace caustica {
 namespace {
@@ -22,12 +23,7 @@ std::string file(const std::vector<MeshSpec>& meshes, uint16_t version = 4) {
 }
 
 std::string serialized_error(const std::string& bytes, uint64_t index = 0) {
-  try {
-    read_serialized(bytes, index);
-  } catch (const SerializedError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::thrown_message<SerializedError>([&] { read_serialized(bytes, index); });
 }
 
 MeshSpec rich_triangle() {
