@@ -124,9 +124,9 @@ MeshData read_obj(const std::string& text) {
         }
         for (size_t k = 1; k + 1 < count; ++k)
           mesh.indices.insert(mesh.indices.end(), {face_vertices[0], face_vertices[k], face_vertices[k + 1]});
+        ++face;
       }
       first += count;
-      ++face;
     }
   }
   // Attributes only some corners carry are dropped with their memory.
