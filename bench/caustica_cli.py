@@ -28,9 +28,12 @@ class Caustica:
 
         `integrator` may name a sampler after an '@' (path@ldsampler), which the scene takes as $sampler, with
         its sample_count ($spp) the run's: the stratifying samplers stratify the whole run, not blocks of it.
+        Without one the scene gets `independent`, whatever its own default: references, merges and the
+        variance layers assume independent samples.
         """
         name, _, sampler = integrator.partition("@")
-        defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}", "-D", f"spp={spp}"] if sampler else [])
+        defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}", "-D", f"spp={spp}"]
+                                          if sampler else ["-D", "sampler=independent"])
         self._run(["render", scene, "-o", output, "--integrator", name, "--spp", spp, "--seed", seed, *defines,
                    "--threads", self.threads, "--exr-format", "float", "-q"])
         return read_metadata(output)

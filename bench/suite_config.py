@@ -11,8 +11,8 @@ from dataclasses import dataclass
 INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=10000", "direct"]
 
 # Every integrator runs with each sampler; a run is named INTEGRATOR@SAMPLER
-# for every sampler but the first (the scenes' default), which keeps the
-# integrator's plain name.
+# for every sampler but the first (independent, passed to the scene even
+# where its default differs), which keeps the integrator's plain name.
 SAMPLERS = ["independent", "ldsampler", "stratified", "multijitter", "halton"]
 
 
