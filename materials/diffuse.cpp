@@ -21,6 +21,7 @@ class DiffuseBsdf final : public Bsdf {
   explicit DiffuseBsdf(const Properties& props) : reflectance_(read_reflectance(props, "reflectance")) {}
 
   uint32_t lobes() const override { return kDiffuseReflection; }
+  bool reads_tangents() const override { return false; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};

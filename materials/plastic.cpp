@@ -55,6 +55,7 @@ class PlasticBsdf final : public Bsdf {
   }
 
   uint32_t lobes() const override { return kDeltaReflection | kDiffuseReflection; }
+  bool reads_tangents() const override { return false; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};

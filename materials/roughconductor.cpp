@@ -51,6 +51,7 @@ class RoughConductorBsdf final : public Bsdf {
         sample_visible_(props.get_bool("sample_visible")) {}
 
   uint32_t lobes() const override { return kGlossyReflection; }
+  bool reads_tangents() const override { return false; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     return eval_with(roughness_.at(ctx.uv), ctx, wo, wi);

@@ -53,6 +53,7 @@ class RoughDielectricBsdf final : public Bsdf {
   explicit RoughDielectricBsdf(const Properties& props)
       : interface_(props), roughness_(props), sample_visible_(props.get_bool("sample_visible")) {}
 
+  bool reads_tangents() const override { return false; }
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
   }

@@ -70,6 +70,7 @@ class RoughPlasticBsdf final : public Bsdf {
   }
 
   uint32_t lobes() const override { return kGlossyReflection | kDiffuseReflection; }
+  bool reads_tangents() const override { return false; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};

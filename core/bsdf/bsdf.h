@@ -63,6 +63,10 @@ class Bsdf : public Plugin {
   virtual std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const = 0;
   // Directional-hemispherical reflectance seen from wo, as written to the albedo AOV.
   virtual Color albedo(const BsdfContext& ctx, Vec3 wo) const = 0;
+  // Whether the BSDF reads the context's tangents (dpdu, dpdv). Only then
+  // does a surface transform them into the shading frame for it; a
+  // material says false once its values cannot depend on them.
+  virtual bool reads_tangents() const { return true; }
 };
 
 }  // namespace caustica

@@ -11,6 +11,7 @@ class DeltaBsdf : public Bsdf {
  public:
   Color eval(const BsdfContext&, Vec3, Vec3) const final { return {}; }
   float pdf(const BsdfContext&, Vec3, Vec3) const final { return 0; }
+  bool reads_tangents() const override { return false; }
 };
 
 }  // namespace caustica

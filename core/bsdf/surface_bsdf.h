@@ -17,8 +17,9 @@ class SurfaceBsdf {
   SurfaceBsdf(const Bsdf& bsdf, const SurfaceInteraction& si, TransportMode mode)
       : bsdf_(&bsdf), frame_(si.shading), ng_(si.ng), ctx_{mode, si.uv} {
     // Shapes without a parametrisation leave the tangents zero; the
-    // defaults (the shading frame's own axes) stand in for them.
-    if (squared_length(si.dpdu) > 0 && squared_length(si.dpdv) > 0) {
+    // defaults (the shading frame's own axes) stand in for them. Most
+    // materials never read them, and skip their transformation.
+    if (bsdf.reads_tangents() && squared_length(si.dpdu) > 0 && squared_length(si.dpdv) > 0) {
       ctx_.dpdu = frame_.to_local(si.dpdu);
       ctx_.dpdv = frame_.to_local(si.dpdv);
     }
