@@ -22,7 +22,7 @@ size_t line_of_face(const std::string& text, size_t face) {
     const size_t end = std::min(text.find('\n', begin), text.size());
     const std::string_view content = std::string_view(text).substr(begin, end - begin);
     const size_t at = content.find_first_not_of(" \t");
-    if (at != std::string_view::npos && content.substr(at).starts_with("f") && at + 1 < content.size() &&
+    if (at != std::string_view::npos && content[at] == 'f' && at + 1 < content.size() &&
         (content[at + 1] == ' ' || content[at + 1] == '\t')) {
       int corners = 0;
       for (size_t i = at + 1; i < content.size(); ++i)
