@@ -14,12 +14,12 @@ namespace caustica {
 FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels, Moments moments)
     : width_(width), height_(height), channels_(std::move(channels)) {
   const size_t pixels = size_t(width) * height;
-  weighted_sum_.assign(pixels * channels_.size(), 0);
-  weight_sum_.assign(pixels, 0);
+  weighted_sum_.assign(pixels * channels_.size(), {});
+  weight_sum_.assign(pixels, {});
   if (moments == Moments::Kept) {
-    weight2_sum_.assign(pixels, 0);
-    w2x_.assign(pixels * 3, 0);
-    w2x2_.assign(pixels * 3, 0);
+    weight2_sum_.assign(pixels, {});
+    w2x_.assign(pixels * 3, {});
+    w2x2_.assign(pixels * 3, {});
   }
   count_.assign(pixels, 0);
 }
@@ -32,16 +32,16 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
     return;
   }
   const size_t p = index(id.pixel);
-  double* sum = &weighted_sum_[p * channels_.size()];
-  for (size_t c = 0; c < channels_.size(); ++c) sum[c] += double(weight) * values[c];
-  weight_sum_[p] += weight;
+  ExactSum* sum = &weighted_sum_[p * channels_.size()];
+  for (size_t c = 0; c < channels_.size(); ++c) sum[c].add(double(weight) * values[c]);
+  weight_sum_[p].add(weight);
   count_[p] += samples;
   if (!keeps_moments()) return;
   const double w2 = double(weight) * weight;
-  weight2_sum_[p] += w2;
+  weight2_sum_[p].add(w2);
   for (size_t c = 0; c < std::min<size_t>(3, values.size()); ++c) {
-    w2x_[p * 3 + c] += w2 * values[c];
-    w2x2_[p * 3 + c] += w2 * values[c] * values[c];
+    w2x_[p * 3 + c].add(w2 * values[c]);
+    w2x2_[p * 3 + c].add(w2 * values[c] * values[c]);
   }
 }
 
@@ -72,17 +72,17 @@ void FilmBuffer::add_splats(const SplatList& list, const ReconstructionFilter& f
       for (int x = x0; x <= x1; ++x) {
         const double w = norm * fy * fx[size_t(x - x0)];
         if (w == 0) continue;
-        double* sum = &splat_sum_[index({x, y}) * nc + s.channel];
-        sum[0] += w * s.value.r;
-        sum[1] += w * s.value.g;
-        sum[2] += w * s.value.b;
+        ExactSum* sum = &splat_sum_[index({x, y}) * nc + s.channel];
+        sum[0].add(w * s.value.r);
+        sum[1].add(w * s.value.g);
+        sum[2].add(w * s.value.b);
       }
     }
   }
 }
 
 void FilmBuffer::enable_splats() {
-  if (splat_sum_.empty()) splat_sum_.assign(weighted_sum_.size(), 0);
+  if (splat_sum_.empty()) splat_sum_.assign(weighted_sum_.size(), {});
 }
 
 void FilmBuffer::record_dropped(const SplatList& list) {
@@ -98,9 +98,9 @@ std::vector<float> FilmBuffer::resolve() const {
 void FilmBuffer::resolve_pixel(size_t p, float* out) const {
   const size_t nc = channels_.size();
   for (size_t c = 0; c < nc; ++c)
-    out[c] = weight_sum_[p] != 0 ? float(weighted_sum_[p * nc + c] / weight_sum_[p]) : 0.0f;
+    out[c] = weight_sum_[p].value() != 0 ? float(weighted_sum_[p * nc + c].value() / weight_sum_[p].value()) : 0.0f;
   if (!splat_sum_.empty() && splat_paths_per_pixel_ > 0)
-    for (size_t c = 0; c < nc; ++c) out[c] += float(splat_sum_[p * nc + c] / double(splat_paths_per_pixel_));
+    for (size_t c = 0; c < nc; ++c) out[c] += float(splat_sum_[p * nc + c].value() / double(splat_paths_per_pixel_));
 }
 
 std::vector<float> FilmBuffer::variance() const {
@@ -112,13 +112,14 @@ std::vector<float> FilmBuffer::variance() const {
 
 void FilmBuffer::variance_pixel(size_t p, float* out) const {
   const size_t nc = channels_.size();
-  const double n = count_[p], W = weight_sum_[p];
+  const double n = count_[p], W = weight_sum_[p].value();
   for (size_t c = 0; c < 3; ++c) {
     out[c] = 0;
     if (n < 2 || W == 0 || c >= nc) continue;
-    const double mean = weighted_sum_[p * nc + c] / W;
-    const double spread = w2x2_[p * 3 + c] - 2 * mean * w2x_[p * 3 + c] + mean * mean * weight2_sum_[p];
-    // The sums are double and cannot overflow; a float can, so the
+    const double mean = weighted_sum_[p * nc + c].value() / W;
+    const double spread =
+        w2x2_[p * 3 + c].value() - 2 * mean * w2x_[p * 3 + c].value() + mean * mean * weight2_sum_[p].value();
+    // The sums have a double's range and cannot overflow; a float can, so the
     // variance of radiance beyond about 1e19 is clamped to the largest one.
     const double variance = std::max(0.0, spread) / (W * W) * n / (n - 1);
     out[c] = float(std::min(variance, double(std::numeric_limits<float>::max())));
@@ -136,6 +137,10 @@ void split_double(double d, float* out) {
 }
 
 double join_floats(const float* in) { return double(in[0]) + double(in[1]) + double(in[2]); }
+
+// The rest of a sum is below 2^-53 of its value: scaled up, it stays in the
+// range of floats wherever the value does.
+constexpr int kRestScale = 64;
 
 }  // namespace
 
@@ -167,7 +172,7 @@ std::vector<std::string> FilmBuffer::raw_channels(const std::string& prefix) con
     for (const std::string& c : channels_) sums.push_back("splat." + c);
   std::vector<std::string> names;
   for (const std::string& s : sums)
-    for (const char* part : {".0", ".1", ".2"}) names.push_back(prefix + s + part);
+    for (const char* part : {".0", ".1", ".2", ".3", ".4", ".5"}) names.push_back(prefix + s + part);
   names.push_back(prefix + "count");
   return names;
 }
@@ -180,9 +185,10 @@ std::vector<float> FilmBuffer::export_raw() const {
 }
 
 void FilmBuffer::export_raw_pixel(size_t p, float* out) const {
-  for_each_sum(*this, p, [&](double sum) {
-    split_double(sum, out);
-    out += 3;
+  for_each_sum(*this, p, [&](const ExactSum& sum) {
+    split_double(sum.value(), out);
+    split_double(std::ldexp(sum.rest(), kRestScale), out + 3);
+    out += 6;
   });
   *out = float(count_[p]);
 }
@@ -193,9 +199,9 @@ void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {
   const size_t per_pixel = raw_channels("").size();
   for (size_t p = 0; p < count_.size(); ++p) {
     const float* in = &raw[p * per_pixel];
-    for_each_sum(*this, p, [&](double& sum) {
-      sum += join_floats(in);
-      in += 3;
+    for_each_sum(*this, p, [&](ExactSum& sum) {
+      sum.add(ExactSum::from_parts(join_floats(in), std::ldexp(join_floats(in + 3), -kRestScale)));
+      in += 6;
     });
     count_[p] += uint32_t(*in);
   }

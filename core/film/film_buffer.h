@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math/exact_sum.h"
 #include "core/math/vec.h"
 
 namespace caustica {
@@ -73,9 +74,11 @@ class FilmBuffer {
   // The sums behind resolve() and variance() as float channels named
   // prefix + "sum.R.0" ..., for storing a render so that renders of
   // disjoint sample ranges merge into the film of one render of them all.
-  // Each double sum becomes three floats (.0, .1, .2) whose sum is exactly
-  // the double (for magnitudes between 1e-24 and 3e38); the sample count is
-  // one channel.
+  // Each sum (an ExactSum) becomes six floats: three (.0, .1, .2) adding up
+  // to its value, three (.3, .4, .5) to its rest scaled by 2^64, exactly for
+  // magnitudes between 1e-24 and 1e35; the sample count is one channel.
+  // Sums are exact, so merged films equal the film of all their samples bit
+  // for bit.
   std::vector<std::string> raw_channels(const std::string& prefix) const;
   // Pixel-interleaved, raw_channels().size() values per pixel.
   std::vector<float> export_raw() const;
@@ -93,13 +96,14 @@ class FilmBuffer {
 
   int width_, height_;
   std::vector<std::string> channels_;
-  std::vector<double> weighted_sum_;  // channels per pixel
-  std::vector<double> weight_sum_;
-  std::vector<double> weight2_sum_, w2x_, w2x2_;  // sums of w^2, w^2 x and w^2 x^2 (three); empty without moments
+  // Exact sums, so that no order or grouping of the samples changes a bit.
+  std::vector<ExactSum> weighted_sum_;  // channels per pixel
+  std::vector<ExactSum> weight_sum_;
+  std::vector<ExactSum> weight2_sum_, w2x_, w2x2_;  // sums of w^2, w^2 x and w^2 x^2 (three); empty without moments
   std::vector<uint32_t> count_;
-  std::vector<double> splat_sum_;  // channels per pixel, allocated by the first splat
+  std::vector<ExactSum> splat_sum_;  // channels per pixel, allocated by the first splat
   uint64_t splat_paths_per_pixel_ = 0;
-  // The double sums of one pixel in the order raw_channels() names them.
+  // The sums of one pixel in the order raw_channels() names them.
   template <class Self, class F>
   static void for_each_sum(Self& film, size_t p, F&& f);
   struct DropLog {

@@ -15,9 +15,8 @@ RenderFile without_raw_sums(RenderFile render);
 // Merges renders of one scene, integrator and seed over disjoint ranges of
 // sample indices (render --first-sample N --spp COUNT --raw-sums) into the
 // render of their union: the raw sums are added and resolved as the film
-// resolves them, so the image is that of one render of all the samples, up
-// to the order in which the double sums were added (the very same float
-// image in the tests). The metadata lists the ranges in caustica:ranges
+// resolves them; the film's sums are exact (ExactSum), so the image is that
+// of one render of all the samples, bit for bit. The metadata lists the ranges in caustica:ranges
 // (adjacent ones joined), so merges merge again. Throws
 // std::invalid_argument naming the file when a part lacks raw sums,
 // differs in size, channels, scene, integrator or seed, or overlaps another

@@ -45,8 +45,8 @@ TEST(FilmBuffer, AFilmWithoutMomentsKeepsMeansAndRawSumsOnly) {
   EXPECT_EQ(without.sample_count({1, 0}), 2u);
   EXPECT_THROW(without.variance(), std::logic_error);
   const std::vector<std::string> names = without.raw_channels("p.");
-  ASSERT_EQ(names.size(), (4 + 1) * 3 + 1u);
-  EXPECT_EQ(names[12], "p.weight.0");
+  ASSERT_EQ(names.size(), (4 + 1) * 6 + 1u);
+  EXPECT_EQ(names[24], "p.weight.0");
   EXPECT_EQ(names.back(), "p.count");
   FilmBuffer merged(2, 1, {"R", "G", "B", "Z"}, FilmBuffer::Moments::None);
   merged.add_raw(without.export_raw(), 0);

@@ -59,7 +59,7 @@ TEST(RenderLayers, EvaluatedLayersAreWrittenInFloatAndNotScanned) {
   const RenderLayers layers(r->result.film, &*r->first_hit, true, true);
   std::vector<std::string> float_only = layers.rows().float_only;
   std::sort(float_only.begin(), float_only.end());
-  EXPECT_EQ(float_only.size(), 7u + 7 * 3 + 3 + 1);  // resolved, raw sums, raw weight, raw count
+  EXPECT_EQ(float_only.size(), 7u + 7 * 6 + 6 + 1);  // resolved, raw sums, raw weight, raw count
   EXPECT_TRUE(std::binary_search(float_only.begin(), float_only.end(), "depth.T"));
   EXPECT_FALSE(std::binary_search(float_only.begin(), float_only.end(), "R"));
   const uint64_t before = r->job.scene()->layer_rays_traced();
