@@ -10,12 +10,16 @@ class UnknownIntegrator(Exception):
 
 
 class Caustica:
-    def __init__(self, binary, threads):
+    def __init__(self, binary, threads, launcher=(), env=None):
+        """`launcher` prefixes each command (mpirun -n 2, for a render across ranks)."""
         self.binary = str(binary)
         self.threads = threads
+        self.launcher = list(launcher)
+        self.env = env
 
     def _run(self, args):
-        result = subprocess.run([self.binary, *map(str, args)], capture_output=True, text=True)
+        result = subprocess.run([*self.launcher, self.binary, *map(str, args)], capture_output=True, text=True,
+                                env=self.env)
         if result.returncode != 0:
             message = result.stderr.strip() or result.stdout.strip()
             if "unknown integrator" in message:

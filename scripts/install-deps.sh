@@ -10,6 +10,8 @@ packages=(
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libpugixml-dev libtinyobjloader-dev libfmt-dev zlib1g-dev
+  # mpirun -n N caustica render ...
+  libopenmpi-dev openmpi-bin
   # tests/fuzz: libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer
   clang libclang-rt-14-dev
   # bench/: the convergence suite reads EXRs and plots from Python

@@ -4,11 +4,14 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "core/cli/interrupt.h"
 #include "core/cli/number_checks.h"
 #include "core/cli/progress_display.h"
+#include "core/errors/interrupted.h"
 #include "core/image/image_output.h"
+#include "core/job/distributed_render.h"
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
 
@@ -39,6 +42,11 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("--debug-pixel", debug_pixel_, "replay one sample of pixel X,Y and print it");
   command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays");
   command_->add_flag("-q,--quiet", quiet_, "print nothing but errors");
+  command_
+      ->add_option("--rank-timeout", rank_timeout_,
+                   "under mpirun: seconds a rank may stay silent (beyond what rank 0's own share of a round "
+                   "took) before rank 0 writes what the others rendered and ends the job")
+      ->check(finite_positive());
   develop_.add_to(*command_);
 }
 
@@ -88,17 +96,40 @@ int RenderCommand::run() const {
   // Installed first, so an interrupt while the scene loads still ends in an
   // image (of the first pass) rather than in nothing.
   install_interrupt_handler();
+  if (!started_by_mpirun()) return render(nullptr);
+  const RankSession session;
+  try {
+    return render(&session);
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "caustica: %s\n", e.what());
+    std::fflush(stderr);
+    // Rank 0's own share may still be rendering on another thread.
+    std::_Exit(130);
+  } catch (const std::exception& e) {
+    // The other ranks wait for this one: the job ends with it.
+    std::fprintf(stderr, "caustica: rank %d: error: %s\n", session.rank(), e.what());
+    std::fflush(stderr);
+    session.abort(1);
+  }
+}
+
+int RenderCommand::render(const RankSession* session) const {
+  const bool rank0 = !session || session->rank() == 0;
   RenderSettings settings;
   settings.integrator = integrator_;
   settings.spp = spp_;
   settings.first_sample = first_sample_;
   settings.time_limit = time_;
   settings.seed = seed_;
-  settings.threads = threads_;
+  // The ranks on one machine share its cores.
+  settings.threads = threads_ > 0 || !session
+                         ? threads_
+                         : std::max(1, int(std::thread::hardware_concurrency()) / session->local_size());
   settings.stop = &interrupt_requested();
   const RenderJob job = load_render_job(scene_, parse_defines(defines_), settings);
-  for (const std::string& warning : job.scene().warnings)
-    std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
+  if (rank0)
+    for (const std::string& warning : job.scene().warnings)
+      std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
   if (!debug_pixel_.empty()) return replay(job);
 
   const Film& film = *job.scene()->sensor().film();
@@ -111,19 +142,26 @@ int RenderCommand::run() const {
   // Everything that can fail on bad options fails before the render.
   const Developer developer = develop_.make(job.scene().tone_operator, film.output().ldr);
 
-  const std::string plan = job.plan();
-  if (!quiet_ && !plan.empty()) {
+  std::string plan = job.plan();
+  if (session) plan += (plan.empty() ? "" : "\n") + distributed_plan(job, session->size());
+  if (!quiet_ && rank0 && !plan.empty()) {
     std::printf("%s\n", plan.c_str());
     // The line that says loading is over, for whoever reads a pipe.
     std::fflush(stdout);
   }
   RenderProgress progress;
   std::optional<RenderResult> result;
+  std::optional<DistributedRender> distributed;
   {
     std::optional<ProgressDisplay> display;
-    if (!quiet_) display.emplace(progress, time_);
-    result = job.run(&progress);
+    if (!quiet_ && rank0) display.emplace(progress, time_);
+    if (!session)
+      result = job.run(&progress);
+    else if ((distributed = render_across_ranks(job, *session, &progress, {rank_timeout_})))
+      result = std::move(distributed->result);
   }
+  if (!rank0) return 0;
+  if (distributed && result->stats.spp == 0) throw Interrupted("interrupted before any samples were collected");
   const RenderStats& stats = result->stats;
 
   const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(*result);
@@ -170,7 +208,35 @@ int RenderCommand::run() const {
     std::fprintf(stderr, "caustica: warning: %llu non-finite samples were dropped; replay the first with:\n  %s\n",
                  static_cast<unsigned long long>(stats.dropped),
                  replay_command(scene_, stats.first_dropped, seed_).c_str());
+  if (distributed) end_distributed(*distributed, stats, *session, exr);
   return 0;
+}
+
+void RenderCommand::end_distributed(const DistributedRender& render, const RenderStats& stats,
+                                    const RankSession& session, const std::filesystem::path& exr) const {
+  const std::string held =
+      std::to_string(stats.spp) + " samples per pixel" + (stats.ranges.empty() ? "" : " (caustica:ranges lists which)");
+  if (render.signalled) {
+    std::fprintf(stderr,
+                 "caustica: stopped by a signal while the ranks rendered (mpirun ends every rank when one fails, and "
+                 "names it above): %s holds the %s collected before\n",
+                 exr.c_str(), held.c_str());
+    std::fflush(stdout);
+    std::fflush(stderr);
+    // Rank 0's own share may still be rendering on another thread.
+    std::_Exit(130);
+  }
+  if (render.lost.empty()) return;
+  std::string lost;
+  for (int rank : render.lost) lost += (lost.empty() ? "" : ", ") + std::to_string(rank);
+  std::fprintf(stderr,
+               "caustica: error: lost rank %s (no answer within --rank-timeout %g s): %s holds the %s that the "
+               "ranks still answering rendered; render the missing samples with --first-sample and merge\n",
+               lost.c_str(), rank_timeout_, exr.c_str(), held.c_str());
+  std::fflush(stdout);
+  std::fflush(stderr);
+  // MPI cannot finalise with a rank gone.
+  session.abort(4);
 }
 
 }  // namespace caustica

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "core/cli/develop_options.h"
+#include "core/job/distributed_render.h"
 
 namespace caustica {
 
@@ -17,13 +19,19 @@ class RenderCommand {
   int run() const;
 
  private:
-  int replay(const class RenderJob& job) const;
+  int render(const RankSession* session) const;
+  int replay(const RenderJob& job) const;
+  // Under mpirun, on rank 0 once the image is written (`render`'s result
+  // now moved out): a render that lost ranks or was signalled ends the job
+  // with a message saying what the image holds.
+  void end_distributed(const DistributedRender& render, const RenderStats& stats, const RankSession& session,
+                       const std::filesystem::path& exr) const;
 
   CLI::App* command_ = nullptr;
   std::string scene_, output_, integrator_, debug_pixel_, exr_format_;
   std::vector<std::string> defines_;
   uint32_t spp_ = 0;
-  double time_ = 0;
+  double time_ = 0, rank_timeout_ = 120;
   int threads_ = 0;
   uint64_t seed_ = 0, debug_sample_ = 0, first_sample_ = 0;
   bool quiet_ = false, raw_sums_ = false;

@@ -207,6 +207,51 @@ void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {
   }
 }
 
+namespace {
+
+// pack()'s header: whether splats follow, the splat paths, the dropped
+// samples and the first of them (integers below 2^53, exact as doubles).
+constexpr size_t kPackHeader = 6;
+
+}  // namespace
+
+std::vector<double> FilmBuffer::pack() const {
+  const SampleId first = first_dropped();
+  std::vector<double> out{double(has_splats()),  double(splat_paths_per_pixel_), double(dropped_samples()),
+                          double(first.pixel.x), double(first.pixel.y),          double(first.index)};
+  out.reserve(kPackHeader + count_.size() * ((raw_channels("").size() - 1) / 3 + 1));
+  for (size_t p = 0; p < count_.size(); ++p) {
+    for_each_sum(*this, p, [&](const ExactSum& sum) { out.insert(out.end(), {sum.value(), sum.rest()}); });
+    out.push_back(count_[p]);
+  }
+  return out;
+}
+
+void FilmBuffer::add_packed(std::span<const double> packed) {
+  if (packed.size() < kPackHeader) throw std::invalid_argument("a packed film without its header");
+  const bool splats = packed[0] != 0;
+  if (splats) enable_splats();
+  // The splat sums come last: a packed film without them leaves this film's alone.
+  const size_t sums = (raw_channels("").size() - 1) / 6 - (has_splats() && !splats ? channels_.size() : 0);
+  const size_t per_pixel = 2 * sums + 1;
+  if (packed.size() != kPackHeader + count_.size() * per_pixel)
+    throw std::invalid_argument("a packed film of " + std::to_string(packed.size()) +
+                                " values does not fit a film that takes " +
+                                std::to_string(kPackHeader + count_.size() * per_pixel));
+  splat_paths_per_pixel_ += uint64_t(packed[1]);
+  if (packed[2] > 0) dropped_->record({{int(packed[3]), int(packed[4])}, uint64_t(packed[5])}, uint64_t(packed[2]));
+  const double* in = packed.data() + kPackHeader;
+  for (size_t p = 0; p < count_.size(); ++p) {
+    size_t k = 0;
+    for_each_sum(*this, p, [&](ExactSum& sum) {
+      if (k++ >= sums) return;
+      sum.add(ExactSum::from_parts(in[0], in[1]));
+      in += 2;
+    });
+    count_[p] += uint32_t(*in++);
+  }
+}
+
 SampleId FilmBuffer::first_dropped() const {
   std::lock_guard lock(dropped_->mutex);
   return dropped_->first;

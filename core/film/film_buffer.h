@@ -54,8 +54,9 @@ class FilmBuffer {
   void add_splats(const SplatList& list, const ReconstructionFilter& filter, int y_begin, int y_end);
   // Counts the list's dropped splats; call once per list.
   void record_dropped(const SplatList& list);
-  // Light paths traced per pixel so far: the splat image is divided by it.
-  void set_splat_paths_per_pixel(uint64_t n) { splat_paths_per_pixel_ = n; }
+  // Counts n more light paths per pixel: the splat image is divided by
+  // their total.
+  void add_splat_paths(uint64_t n) { splat_paths_per_pixel_ += n; }
   bool has_splats() const { return !splat_sum_.empty(); }
 
   // The weighted mean of each channel plus the splat image, pixel-interleaved.
@@ -86,6 +87,14 @@ class FilmBuffer {
   // Adds sums export_raw() gave for a film of the same size and channels;
   // `splat_paths` is the light paths per pixel behind its splats.
   void add_raw(std::span<const float> raw, uint64_t splat_paths);
+
+  // Everything the film holds (sums, counts, splat paths, dropped samples)
+  // as doubles, for another process to add to a film of the same size,
+  // channels and moments with add_packed: the result is the film of both
+  // films' samples, bit for bit.
+  std::vector<double> pack() const;
+  // Throws std::invalid_argument when `packed` does not fit this film.
+  void add_packed(std::span<const double> packed);
 
   uint64_t dropped_samples() const { return dropped_->count.load(); }
   // The first dropped sample (lowest pixel, then index), if any.

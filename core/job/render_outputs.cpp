@@ -142,6 +142,8 @@ std::map<std::string, std::string> render_metadata(const RenderJob& job, const R
                                                  {"caustica:interrupted", stats.interrupted ? "true" : "false"},
                                                  {"caustica:version", kVersion}};
   if (!stats.summary.empty()) metadata["caustica:run"] = stats.summary;
+  if (stats.ranks > 1) metadata["caustica:ranks"] = std::to_string(stats.ranks);
+  if (!stats.ranges.empty()) metadata["caustica:ranges"] = stats.ranges;
   if (raw_sums) {
     const std::optional<FirstHitLayers> layers = job.first_hit_layers(result);
     add_raw_channel_lists(result.film, layers ? layers->channels() : std::vector<std::string>{}, metadata);

@@ -77,6 +77,12 @@ class Integrator : public Plugin {
   // What it will do with this scene and what it skips as the scene does not
   // need it, in a line or two; for `caustica info` and the render log.
   virtual std::string plan(const Scene&) const { return ""; }
+  // Whether the samples of a pass may be rendered apart, a range of them by
+  // another process, their films then added: not where iterations share
+  // per-pixel state.
+  virtual bool splits_samples() const { return true; }
+  // What a render across several processes does that the plan should say.
+  virtual std::string distributed_note() const { return ""; }
   // Its name and parameters, for the output's metadata.
   std::string describe() const { return describe_parameters(); }
   // Starts a render of `scene` with the render's seed.

@@ -34,6 +34,7 @@ class IterativeIntegrator : public Integrator {
  public:
   virtual std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const = 0;
   std::unique_ptr<IntegratorRun> start(const Scene& scene, uint64_t seed) const final;
+  bool splits_samples() const final { return false; }
 };
 
 }  // namespace caustica

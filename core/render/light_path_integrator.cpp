@@ -55,8 +55,7 @@ class LightPathRun final : public IntegratorRun {
                         });
       for (size_t i = 0; i < end - begin; ++i) target.film.record_dropped(lists[i]);
     }
-    done_ += range.count;
-    target.film.set_splat_paths_per_pixel(done_);
+    target.film.add_splat_paths(range.count);
     return true;
   }
 
@@ -87,7 +86,6 @@ class LightPathRun final : public IntegratorRun {
   uint64_t seed_;
   size_t channels_;
   std::vector<Tile> tiles_;
-  uint64_t done_ = 0;
 };
 
 }  // namespace

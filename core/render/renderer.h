@@ -39,6 +39,10 @@ struct RenderStats {
   bool interrupted = false;
   bool variance_known = true;  // whether the film's variance describes the estimate
   std::string summary;         // what the render did beyond its parameters (IntegratorRun::summary)
+  int ranks = 1;               // the processes that rendered it (core/job/distributed_render.h)
+  // The sample indices held, "first-last,..." where they are not the
+  // contiguous spp from the first sample (ranks lost part-way); else empty.
+  std::string ranges;
 };
 
 // Renders `integrator` over `scene` in passes (core/render/pass_schedule.h)

@@ -105,6 +105,10 @@ class PhotonIntegrator final : public PixelIntegrator {
            scene.features().caustics_reason + "), path tracing for the rest";
   }
 
+  std::string distributed_note() const override {
+    return "each rank traces every photon round itself and gathers for its own share of the samples";
+  }
+
  private:
   friend class CausticRounds;
 

@@ -1,5 +1,6 @@
 #include "core/film/film_buffer.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +10,12 @@
 #include "core/film/splat_list.h"
 #include "core/registry/properties.h"
 #include "tests/support/test_scenes.h"
+#include "tests/support/thrown_message.h"
 
 namespace caustica {
 namespace {
+
+using ::testing::HasSubstr;
 
 TEST(FilmBuffer, WeightedMeanAndVariance) {
   FilmBuffer film(2, 1, {"R", "G", "B"});
@@ -100,7 +104,7 @@ TEST(FilmBuffer, BoxSplatLandsInItsPixel) {
   SplatList list;
   list.add({2.3f, 1.7f}, Color(1, 2, 3));
   film.add_splats(list, *make_filter("box"), 0, 3);
-  film.set_splat_paths_per_pixel(4);
+  film.add_splat_paths(4);
   const auto img = film.resolve();
   for (size_t p = 0; p < 12; ++p) EXPECT_FLOAT_EQ(img[p * 3 + 1], p == 1 * 4 + 2 ? 0.5f : 0.0f) << "pixel " << p;
 }
@@ -121,7 +125,7 @@ TEST(FilmBuffer, SplatWeightsSumToOneOnAverage) {
       for (int i = 0; i < n; ++i) list.add({5 + (i + 0.5f) / n, 6 + (j + 0.5f) / n}, Color(1));
     film.add_splats(list, *filter, 0, 6);
     film.add_splats(list, *filter, 6, 12);
-    film.set_splat_paths_per_pixel(n * n);
+    film.add_splat_paths(n * n);
     double sum = 0;
     for (float v : film.resolve()) sum += v;
     EXPECT_NEAR(sum, 3.0, 3e-3) << name;  // the filter's tabulated integral is good to 1e-3
@@ -129,10 +133,45 @@ TEST(FilmBuffer, SplatWeightsSumToOneOnAverage) {
     FilmBuffer top(12, 12, {"R", "G", "B"});
     top.enable_splats();
     top.add_splats(list, *filter, 0, 6);
-    top.set_splat_paths_per_pixel(1);
+    top.add_splat_paths(1);
     const auto img = top.resolve();
     for (size_t i = 6 * 12 * 3; i < img.size(); ++i) EXPECT_EQ(img[i], 0) << name;
   }
+}
+
+// Films packed in one process and added in another make the film of all
+// their samples, splats and dropped samples, bit for bit; a film without
+// splats adds to one with them; a film of another shape is refused.
+TEST(FilmBuffer, PackedFilmsAddUpToTheFilmOfAllTheirSamples) {
+  const auto gaussian = make_filter("gaussian");
+  FilmBuffer whole(3, 2, {"R", "G", "B"}), a(3, 2, {"R", "G", "B"}), b(3, 2, {"R", "G", "B"});
+  for (FilmBuffer* film : {&whole, &a}) {
+    film->enable_splats();
+    SplatList list;
+    list.add({1.2f, 0.7f}, Color(0.3f, 1e-9f, 7));
+    film->add_splats(list, *gaussian, 0, 2);
+    film->add_splat_paths(3);
+  }
+  const float x[3] = {0.1f, 2, 3e5f}, y[3] = {1e-7f, 0.5f, 4}, bad[3] = {1, NAN, 0};
+  for (uint64_t i = 0; i < 20; ++i) {
+    FilmBuffer& part = i % 3 == 0 ? a : b;
+    for (FilmBuffer* film : {&whole, &part}) {
+      film->add_sample({{int(i % 3), int(i % 2)}, i}, i % 2 ? x : y, 0.25f + float(i) * 0.1f);
+      if (i == 7 || i == 9) film->add_sample({{2, 1}, i}, bad, 1);
+    }
+  }
+  FilmBuffer merged(3, 2, {"R", "G", "B"});
+  merged.add_packed(b.pack());
+  merged.add_packed(a.pack());
+  EXPECT_EQ(merged.export_raw(), whole.export_raw());
+  EXPECT_EQ(merged.resolve(), whole.resolve());
+  EXPECT_EQ(merged.variance(), whole.variance());
+  EXPECT_EQ(merged.dropped_samples(), 2u);
+  EXPECT_EQ(merged.first_dropped().index, 7u);
+  EXPECT_EQ(merged.sample_count({1, 1}), whole.sample_count({1, 1}));
+  FilmBuffer other(4, 2, {"R", "G", "B"});
+  EXPECT_THAT(test::thrown_message<std::invalid_argument>([&] { other.add_packed(a.pack()); }),
+              HasSubstr("does not fit a film that takes"));
 }
 
 TEST(FilmBuffer, NonFiniteSplatsAreDroppedAndCounted) {
@@ -146,7 +185,7 @@ TEST(FilmBuffer, NonFiniteSplatsAreDroppedAndCounted) {
   list.add({2.5f, 1.5f}, Color(0, INFINITY, 0));
   film.add_splats(list, *make_filter("box"), 0, 4);
   film.record_dropped(list);
-  film.set_splat_paths_per_pixel(1);
+  film.add_splat_paths(1);
   EXPECT_EQ(film.dropped_samples(), 2u);
   EXPECT_EQ(film.first_dropped().pixel, (Vec2i{3, 1}));
   EXPECT_EQ(film.first_dropped().index, 9u);
