@@ -9,7 +9,8 @@ a unified diff against the tree.
     Equivalent: why no expected value can change (such mutants are listed, not run)
 
 Each test is a test executable, optionally with a GoogleTest filter after
-the first colon. The script keeps a scratch copy of the tree in
+the first colon, or mpi:PATTERN for the tests/mpi tests whose names contain
+PATTERN, run under mpirun against the mutant's caustica. The script keeps a scratch copy of the tree in
 build-mutants/tree, builds it incrementally in build-mutants/build, applies
 each patch there, rebuilds the named executables, runs them, reverts the
 patch, and prints caught or survived with the tests that failed, then the
@@ -109,9 +110,32 @@ class SpecRun:
         self.failing, self.failed, self.tests_run = failing, failed, tests_run
 
 
+def target_of(spec):
+    """The build target a test selection needs: its executable, or caustica for mpi:NAME (tests/mpi, under mpirun)."""
+    exe = spec.partition(":")[0]
+    return "caustica" if exe == "mpi" else exe
+
+
+def run_python_tests(pattern, timeout):
+    """Runs the tests/mpi tests whose names contain `pattern` against the mutant's caustica."""
+    cmd = ["/usr/bin/python3", "-m", "unittest", "discover", "-s", str(TREE / "tests" / "mpi"), "-p", "*_test.py",
+           "-k", pattern]
+    env = dict(os.environ, CAUSTICA_BINARY=str(BUILD / "caustica"))
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=TREE, env=env)
+    except subprocess.TimeoutExpired:
+        return SpecRun(True, [f"mpi:{pattern} (timed out)"], 0)
+    ran = re.search(r"^Ran (\d+) tests?", r.stderr, re.M)
+    names = re.findall(r"^(?:FAIL|ERROR): (\w+)", r.stderr, re.M)
+    return SpecRun(r.returncode != 0, sorted(set(names)) or ([f"mpi (exit {r.returncode})"] if r.returncode else []),
+                   int(ran.group(1)) if ran else 0)
+
+
 def run_tests_spec(spec, timeout):
-    """Runs one executable[:filter]: whether it failed, what failed, how many tests ran."""
+    """Runs one executable[:filter] (or mpi:PATTERN): whether it failed, what failed, how many tests ran."""
     exe, _, gtest_filter = spec.partition(":")
+    if exe == "mpi":
+        return run_python_tests(gtest_filter, timeout)
     cmd = [str(BUILD / "tests" / exe)]
     if gtest_filter:
         cmd.append("--gtest_filter=" + gtest_filter)
@@ -204,7 +228,7 @@ def main():
     subprocess.run(["cmake", "-S", str(TREE), "-B", str(BUILD), "-DCMAKE_BUILD_TYPE=Release"], check=True,
                    capture_output=True)
     runnable = [m for m in mutants if not m.equivalent]
-    targets = sorted({t.partition(":")[0] for m in runnable for t in m.tests})
+    targets = sorted({target_of(t) for m in runnable for t in m.tests})
     ok, log = build(targets, args.jobs)
     if not ok:
         sys.exit("the unmutated tree does not build:\n" + log[-3000:])
@@ -229,7 +253,7 @@ def main():
         if not apply(m):
             status, detail = "does not apply", "run --refresh, or rewrite the patch"
         else:
-            ok, log = build(sorted({t.partition(":")[0] for t in m.tests}), args.jobs)
+            ok, log = build(sorted({target_of(t) for t in m.tests}), args.jobs)
             if not ok:
                 status, detail = "does not compile", ""
             else:

@@ -130,7 +130,7 @@ int RenderCommand::render(const RankSession* session) const {
   if (rank0)
     for (const std::string& warning : job.scene().warnings)
       std::fprintf(stderr, "caustica: warning: %s\n", warning.c_str());
-  if (!debug_pixel_.empty()) return replay(job);
+  if (!debug_pixel_.empty()) return rank0 ? replay(job) : 0;
 
   const Film& film = *job.scene()->sensor().film();
   const std::filesystem::path exr = linear_output(output_, scene_, film);
@@ -198,11 +198,11 @@ int RenderCommand::render(const RankSession* session) const {
   if (!quiet_) {
     std::printf(
         "%s: %s, %dx%d, %u spp in %.2f s, %.3g M samples/s, %.3g M rays/s (the integrator's rays; the first-hit "
-        "layers' %.3g M rays apart), %llu non-finite samples dropped%s -> %s, %s\n",
+        "layers' %.3g M rays apart), %llu non-finite samples dropped%s%s -> %s, %s\n",
         scene_.c_str(), job.integrator().describe().c_str(), film.width(), film.height(), stats.spp, stats.seconds,
         stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6, double(layer_rays) * 1e-6,
-        static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "", exr.c_str(),
-        png.c_str());
+        static_cast<unsigned long long>(stats.dropped), stats.interrupted ? ", interrupted" : "",
+        stats.ranks > 1 ? (", " + std::to_string(stats.ranks) + " ranks").c_str() : "", exr.c_str(), png.c_str());
   }
   if (stats.dropped > 0)
     std::fprintf(stderr, "caustica: warning: %llu non-finite samples were dropped; replay the first with:\n  %s\n",
@@ -218,8 +218,8 @@ void RenderCommand::end_distributed(const DistributedRender& render, const Rende
       std::to_string(stats.spp) + " samples per pixel" + (stats.ranges.empty() ? "" : " (caustica:ranges lists which)");
   if (render.signalled) {
     std::fprintf(stderr,
-                 "caustica: stopped by a signal while the ranks rendered (mpirun ends every rank when one fails, and "
-                 "names it above): %s holds the %s collected before\n",
+                 "caustica: stopped by a signal while the ranks rendered (mpirun ends every rank on Ctrl-C, and when "
+                 "a rank fails, naming it above): %s holds the %s collected before\n",
                  exr.c_str(), held.c_str());
     std::fflush(stdout);
     std::fflush(stderr);

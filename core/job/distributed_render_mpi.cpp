@@ -221,9 +221,13 @@ class Coordinator {
                                std::chrono::duration<double>(options_.rank_timeout + 2 * own_seconds));
         Report report;
         if (wait_for(r, kReport, MPI_BYTE, deadline, settings.stop) != int(sizeof report)) {
-          if (!stopped()) lose(r);
-          out_.signalled = stopped();
-          break;
+          if (stopped()) {
+            out_.signalled = true;
+            break;
+          }
+          // The others' reports still count: their films hold the round.
+          lose(r);
+          continue;
         }
         MPI_Recv(&report, sizeof report, MPI_BYTE, r, kReport, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         pending_[size_t(r)].push_back({report.first, report.count});
@@ -301,17 +305,18 @@ class Coordinator {
     const RenderSettings& settings = job_.settings();
     auto film = std::make_shared<FilmBuffer>(fresh_film(job_));
     auto finished = std::make_shared<std::atomic<int>>(0);  // 1 completed, 2 stopped
-    std::thread worker([this, film, finished, share] {
-      tbb::task_arena arena(thread_count(job_));
-      const PassTarget target{*film, nullptr, thread_count(job_), job_.settings().stop};
+    // Not `this`: the thread may outlive the coordinator (see below).
+    std::thread worker([&job = job_, &run = run_, film, finished, share] {
+      tbb::task_arena arena(thread_count(job));
+      const PassTarget target{*film, nullptr, thread_count(job), job.settings().stop};
       bool completed = false;
-      arena.execute([&] { completed = render_share(run_, share, target); });
+      arena.execute([&] { completed = render_share(run, share, target); });
       finished->store(completed ? 1 : 2);
     });
     while (finished->load() == 0) {
       if (settings.stop && settings.stop->load()) {
-        // The thread keeps the job's scene and run; the process ends
-        // before either goes.
+        // The thread keeps using the job and the run, which stay until the
+        // process ends (render_across_ranks leaves the run alive).
         worker.detach();
         out_.signalled = true;
         return false;
@@ -319,7 +324,10 @@ class Coordinator {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     worker.join();
-    if (finished->load() != 1) return false;
+    if (finished->load() != 1) {
+      out_.signalled = true;  // only a stop request ends a pass early
+      return false;
+    }
     out_.result.film.add_packed(film->pack());
     held_.push_back(share);
     return true;
@@ -377,7 +385,10 @@ std::optional<DistributedRender> render_across_ranks(const RenderJob& job, const
     serve(job, *run, session.rank(), session.size());
     return std::nullopt;
   }
-  return Coordinator(job, *run, session.size(), progress, options).run();
+  DistributedRender out = Coordinator(job, *run, session.size(), progress, options).run();
+  // A signalled render's own share may still be rendering with the run.
+  if (out.signalled) run.release();
+  return out;
 }
 
 std::string distributed_plan(const RenderJob& job, int ranks) {

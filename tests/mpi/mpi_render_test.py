@@ -106,13 +106,14 @@ class MpiRender(unittest.TestCase):
         self.assertIn("rank 0: error:", result.stderr)
         self.assertIn("none.ply", result.stderr)
 
-    def killed_part_way(self, recovery):
-        """Kills rank 1 a second into a long render; the render's output, its
-        process and the partial image."""
+    def killed_part_way(self, recovery, kill_mpirun=False, ranks=2):
+        """Kills rank 1 (or sends mpirun a Ctrl-C) three seconds into a long
+        render; its exit status, error output and partial image."""
         args = ["render", BOX, "-D", "res=16", "--spp", "1000000", "--seed", "4", "--raw-sums", "-q",
                 "--rank-timeout", "2", "-o", str(self.out / "partial.exr"), "--exr-format", "float"]
-        command = ["mpirun", "-n", "2"] + (["--enable-recovery"] if recovery else []) + [BINARY] + args
-        job = subprocess.Popen(command, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        command = ["mpirun", "-n", str(ranks), "--oversubscribe"] + (["--enable-recovery"] if recovery else [])
+        job = subprocess.Popen(command + [BINARY] + args, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
         rank1 = None
         deadline = time.time() + 60
         while rank1 is None and time.time() < deadline:
@@ -127,18 +128,22 @@ class MpiRender(unittest.TestCase):
             time.sleep(0.1)
         self.assertIsNotNone(rank1, "rank 1 never started")
         time.sleep(3)
-        os.kill(rank1, signal.SIGKILL)
+        if kill_mpirun:
+            job.send_signal(signal.SIGINT)
+        else:
+            os.kill(rank1, signal.SIGKILL)
         stdout, stderr = job.communicate(timeout=120)
         return job.returncode, stderr, self.out / "partial.exr"
 
-    # Under --enable-recovery rank 0 notices the silence, writes what it
-    # rendered and collected, names the rank it lost and exits with 4 (which
-    # mpirun in that mode does not pass on: it returns 0); the image holds
-    # its true samples, and merges with a later range.
+    # Under --enable-recovery rank 0 notices the silence, collects the live
+    # ranks' films, writes them, names the rank it lost and exits with 4
+    # (which mpirun in that mode does not pass on: it returns 0); the image
+    # holds its true samples, and merges with a later range.
     def test_a_lost_rank_is_named_and_the_rest_written(self):
-        _, stderr, partial = self.killed_part_way(recovery=True)
-        self.assertIn("caustica: error: lost rank 1 (no answer within --rank-timeout 2 s)", stderr)
-        self.check_partial(partial)
+        for ranks in [2, 3]:
+            _, stderr, partial = self.killed_part_way(recovery=True, ranks=ranks)
+            self.assertIn("caustica: error: lost rank 1 (no answer within --rank-timeout 2 s)", stderr)
+            self.check_partial(partial)
 
     # Without it mpirun ends every rank at once, names the rank that died and
     # exits non-zero; rank 0 writes what it had collected within the second
@@ -150,10 +155,20 @@ class MpiRender(unittest.TestCase):
         self.assertIn("rank 1", stderr)
         self.check_partial(partial)
 
+    # Ctrl-C reaches the ranks as mpirun's SIGTERM, mostly while rank 0
+    # renders its own share on its second thread.
+    def test_ctrl_c_to_mpirun_leaves_the_collected_image(self):
+        _, stderr, partial = self.killed_part_way(recovery=False, kill_mpirun=True)
+        self.assertIn("caustica: stopped by a signal while the ranks rendered", stderr)
+        self.assertNotIn("Segmentation fault", stderr)
+        self.check_partial(partial)
+
     def check_partial(self, partial):
         channels, pixels, metadata = read(partial)
         spp = int(metadata["caustica:spp"])
         self.assertGreater(spp, 0)
+        # The film holds as many samples as the metadata counts.
+        self.assertTrue(np.all(pixels[..., channels.index("samples.Y")] == spp))
         self.assertLess(spp, 1000000)
         self.assertEqual(metadata["caustica:interrupted"], "true")
         held = metadata.get("caustica:ranges", f"0-{spp - 1}")
