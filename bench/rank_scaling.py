@@ -12,39 +12,25 @@ loading included).
 
 import argparse
 import os
-import resource
 import tempfile
 from pathlib import Path
 
 from caustica_cli import Caustica
+from render_rate import add_render_arguments, render_rate
 
-# Open MPI refuses root unless told; ranks beyond the cores are allowed.
+# Open MPI refuses root unless told.
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def cpu_seconds():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
-
-
 def measure(args, ranks, out):
-    """Samples per second of the render loop and per CPU-second of the job; ranks 0 is one plain process."""
+    """render_rate under mpirun -n `ranks`; ranks 0 is one plain process."""
     launcher = ["mpirun", "-n", str(ranks), "--oversubscribe"] if ranks > 0 else []
-    before = cpu_seconds()
-    metadata = Caustica(args.binary, args.threads, launcher, ENV).render(args.scene, out, integrator=args.integrator,
-                                                                         spp=args.spp, seed=1, res=args.res)
-    samples = int(metadata["samples"])
-    return samples / float(metadata["seconds"]), samples / (cpu_seconds() - before)
+    return render_rate(Caustica(args.binary, args.threads, launcher, ENV), args, out)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--binary", default="build/caustica")
-    parser.add_argument("--scene", default="scenes/cornell-box.xml")
-    parser.add_argument("--integrator", default="path")
-    parser.add_argument("--res", type=int, default=256)
-    parser.add_argument("--spp", type=int, default=32)
-    parser.add_argument("--repeat", type=int, default=3)
+    add_render_arguments(parser)
     parser.add_argument("--threads", type=int, default=1, help="threads per rank")
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     args = parser.parse_args()

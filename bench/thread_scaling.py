@@ -11,35 +11,16 @@ loading included), which falls where threads wait or contend.
 
 import argparse
 import os
-import resource
 import tempfile
 from pathlib import Path
 
-from caustica_cli import Caustica, read_metadata
-
-
-def cpu_seconds():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
-
-
-def measure(binary, scene, threads, args, out):
-    """Samples per second of the render loop and per CPU-second of the process."""
-    before = cpu_seconds()
-    metadata = Caustica(binary, threads).render(scene, out, integrator=args.integrator, spp=args.spp, seed=1,
-                                                res=args.res)
-    samples = int(metadata["samples"])
-    return samples / float(metadata["seconds"]), samples / (cpu_seconds() - before)
+from caustica_cli import Caustica
+from render_rate import add_render_arguments, render_rate
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--binary", default="build/caustica")
-    parser.add_argument("--scene", default="scenes/cornell-box.xml")
-    parser.add_argument("--integrator", default="path")
-    parser.add_argument("--res", type=int, default=256)
-    parser.add_argument("--spp", type=int, default=32)
-    parser.add_argument("--repeat", type=int, default=3)
+    add_render_arguments(parser)
     parser.add_argument("--threads", type=int, nargs="+", default=[1, os.cpu_count()])
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
@@ -48,7 +29,7 @@ def main():
         results = {}
         for _ in range(args.repeat):
             for n in args.threads:
-                run = measure(args.binary, args.scene, n, args, Path(tmp) / "out.exr")
+                run = render_rate(Caustica(args.binary, n), args, Path(tmp) / "out.exr")
                 if n not in results or run[0] > results[n][0]:
                     results[n] = run
     base = results[min(results)][0]
