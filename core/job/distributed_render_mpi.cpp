@@ -306,9 +306,11 @@ class Coordinator {
     auto film = std::make_shared<FilmBuffer>(fresh_film(job_));
     auto finished = std::make_shared<std::atomic<int>>(0);  // 1 completed, 2 stopped
     // Not `this`: the thread may outlive the coordinator (see below).
-    std::thread worker([&job = job_, &run = run_, film, finished, share] {
+    // The progress moves with rank 0's own samples during the round, and
+    // takes every rank's at its end.
+    std::thread worker([&job = job_, &run = run_, progress = progress_, film, finished, share] {
       tbb::task_arena arena(thread_count(job));
-      const PassTarget target{*film, nullptr, thread_count(job), job.settings().stop};
+      const PassTarget target{*film, progress, thread_count(job), job.settings().stop};
       bool completed = false;
       arena.execute([&] { completed = render_share(run, share, target); });
       finished->store(completed ? 1 : 2);
