@@ -231,7 +231,7 @@ void RenderCommand::end_distributed(const DistributedRender& render, const Rende
   for (int rank : render.lost) lost += (lost.empty() ? "" : ", ") + std::to_string(rank);
   std::fprintf(stderr,
                "caustica: error: lost rank %s (no answer within --rank-timeout %g s): %s holds the %s that the "
-               "ranks still answering rendered; render the missing samples with --first-sample and merge\n",
+               "ranks still answering rendered; with --raw-sums, render more samples with --first-sample and merge\n",
                lost.c_str(), rank_timeout_, exr.c_str(), held.c_str());
   std::fflush(stdout);
   std::fflush(stderr);
