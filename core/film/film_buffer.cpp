@@ -215,6 +215,32 @@ constexpr size_t kPackHeader = 6;
 
 }  // namespace
 
+void FilmBuffer::add(const FilmBuffer& other) {
+  if (other.count_.size() != count_.size() || other.channels_ != channels_ || other.keeps_moments() != keeps_moments())
+    throw std::invalid_argument("adding a film of another size, channels or moments");
+  const auto add_all = [](std::vector<ExactSum>& to, const std::vector<ExactSum>& from) {
+    for (size_t i = 0; i < from.size(); ++i) to[i].add(from[i]);
+  };
+  add_all(weighted_sum_, other.weighted_sum_);
+  add_all(weight_sum_, other.weight_sum_);
+  add_all(weight2_sum_, other.weight2_sum_);
+  add_all(w2x_, other.w2x_);
+  add_all(w2x2_, other.w2x2_);
+  if (other.has_splats()) enable_splats();
+  add_all(splat_sum_, other.splat_sum_);
+  splat_paths_per_pixel_ += other.splat_paths_per_pixel_;
+  for (size_t p = 0; p < count_.size(); ++p) count_[p] += other.count_[p];
+  if (other.dropped_samples() > 0) dropped_->record(other.first_dropped(), other.dropped_samples());
+}
+
+void FilmBuffer::clear() {
+  for (std::vector<ExactSum>* sums : {&weighted_sum_, &weight_sum_, &weight2_sum_, &w2x_, &w2x2_, &splat_sum_})
+    std::fill(sums->begin(), sums->end(), ExactSum{});
+  std::fill(count_.begin(), count_.end(), 0u);
+  splat_paths_per_pixel_ = 0;
+  dropped_ = std::make_unique<DropLog>();
+}
+
 std::vector<double> FilmBuffer::pack() const {
   const SampleId first = first_dropped();
   std::vector<double> out{double(has_splats()),  double(splat_paths_per_pixel_), double(dropped_samples()),

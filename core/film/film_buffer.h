@@ -88,6 +88,12 @@ class FilmBuffer {
   // `splat_paths` is the light paths per pixel behind its splats.
   void add_raw(std::span<const float> raw, uint64_t splat_paths);
 
+  // Adds everything `other` holds, a film of the same size, channels and
+  // moments: the result is the film of both films' samples, bit for bit.
+  void add(const FilmBuffer& other);
+  // Back to no samples, keeping the memory (and the splat image, if any).
+  void clear();
+
   // Everything the film holds (sums, counts, splat paths, dropped samples)
   // as doubles, for another process to add to a film of the same size,
   // channels and moments with add_packed: the result is the film of both

@@ -124,7 +124,7 @@ void serve(const RenderJob& job, IntegratorRun& run, int rank, int ranks) {
     if (order.collect) {
       const std::vector<double> packed = film.pack();
       MPI_Send(packed.data(), int(packed.size()), MPI_DOUBLE, 0, kFilm, MPI_COMM_WORLD);
-      film = fresh_film(job);
+      film.clear();
     }
     if (order.stop) return;
     const IndexRange share = rank_share({order.first, order.count}, rank, ranks, order.round);
@@ -303,7 +303,8 @@ class Coordinator {
   // SIGKILL); false if it was stopped.
   bool render_own(IndexRange share) {
     const RenderSettings& settings = job_.settings();
-    auto film = std::make_shared<FilmBuffer>(fresh_film(job_));
+    own_film_->clear();
+    const std::shared_ptr<FilmBuffer> film = own_film_;
     auto finished = std::make_shared<std::atomic<int>>(0);  // 1 completed, 2 stopped
     // Not `this`: the thread may outlive the coordinator (see below).
     // The progress moves with rank 0's own samples during the round, and
@@ -330,7 +331,7 @@ class Coordinator {
       out_.signalled = true;  // only a stop request ends a pass early
       return false;
     }
-    out_.result.film.add_packed(film->pack());
+    out_.result.film.add(*film);
     held_.push_back(share);
     return true;
   }
@@ -344,6 +345,9 @@ class Coordinator {
   std::vector<std::vector<IndexRange>> pending_;  // per rank: rendered, not yet collected
   std::vector<IndexRange> held_;                  // the samples in out_.result.film
   std::vector<bool> live_;
+  // Rank 0's share of a round, added to out_ once whole; shared with the
+  // thread that renders it, which may outlive the coordinator.
+  std::shared_ptr<FilmBuffer> own_film_ = std::make_shared<FilmBuffer>(fresh_film(job_));
   Clock::time_point start_ = Clock::now();
 };
 

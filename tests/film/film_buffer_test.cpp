@@ -139,9 +139,10 @@ TEST(FilmBuffer, SplatWeightsSumToOneOnAverage) {
   }
 }
 
-// Films packed in one process and added in another make the film of all
-// their samples, splats and dropped samples, bit for bit; a film without
-// splats adds to one with them; a film of another shape is refused.
+// Films packed in one process and added in another, or added in one, make
+// the film of all their samples, splats and dropped samples, bit for bit; a
+// film without splats adds to one with them; a film of another shape is
+// refused; a cleared film holds nothing.
 TEST(FilmBuffer, PackedFilmsAddUpToTheFilmOfAllTheirSamples) {
   const auto gaussian = make_filter("gaussian");
   FilmBuffer whole(3, 2, {"R", "G", "B"}), a(3, 2, {"R", "G", "B"}), b(3, 2, {"R", "G", "B"});
@@ -169,6 +170,19 @@ TEST(FilmBuffer, PackedFilmsAddUpToTheFilmOfAllTheirSamples) {
   EXPECT_EQ(merged.dropped_samples(), 2u);
   EXPECT_EQ(merged.first_dropped().index, 7u);
   EXPECT_EQ(merged.sample_count({1, 1}), whole.sample_count({1, 1}));
+  // The same in one process.
+  FilmBuffer added(3, 2, {"R", "G", "B"});
+  added.add(b);
+  added.add(a);
+  EXPECT_EQ(added.export_raw(), whole.export_raw());
+  EXPECT_EQ(added.resolve(), whole.resolve());
+  EXPECT_EQ(added.dropped_samples(), 2u);
+  EXPECT_EQ(added.first_dropped().index, 7u);
+  added.clear();
+  FilmBuffer empty(3, 2, {"R", "G", "B"});
+  empty.enable_splats();  // which a cleared film keeps
+  EXPECT_EQ(added.export_raw(), empty.export_raw());
+  EXPECT_EQ(added.dropped_samples(), 0u);
   FilmBuffer other(4, 2, {"R", "G", "B"});
   EXPECT_THAT(test::thrown_message<std::invalid_argument>([&] { other.add_packed(a.pack()); }),
               HasSubstr("does not fit a film that takes"));
