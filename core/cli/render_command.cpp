@@ -103,7 +103,6 @@ int RenderCommand::run() const {
   } catch (const Interrupted& e) {
     std::fprintf(stderr, "caustica: %s\n", e.what());
     std::fflush(stderr);
-    // Rank 0's own share may still be rendering on another thread.
     std::_Exit(130);
   } catch (const std::exception& e) {
     // The other ranks wait for this one: the job ends with it.
@@ -161,7 +160,12 @@ int RenderCommand::render(const RankSession* session) const {
       result = std::move(distributed->result);
   }
   if (!rank0) return 0;
-  if (distributed && result->stats.spp == 0) throw Interrupted("interrupted before any samples were collected");
+  if (distributed && result->stats.spp == 0) {
+    std::fprintf(stderr, "caustica: interrupted before any samples were collected\n");
+    std::fflush(stderr);
+    // Rank 0's own share may still be rendering with this job: no unwinding.
+    std::_Exit(130);
+  }
   const RenderStats& stats = result->stats;
 
   const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(*result);

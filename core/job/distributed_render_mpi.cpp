@@ -157,10 +157,10 @@ std::string join_ranges(std::vector<IndexRange> ranges) {
 // Rank 0: orders the rounds, renders its own shares, collects the others'.
 class Coordinator {
  public:
-  Coordinator(const RenderJob& job, IntegratorRun& run, int ranks, RenderProgress* progress,
+  Coordinator(const RenderJob& job, std::shared_ptr<IntegratorRun> run, int ranks, RenderProgress* progress,
               const DistributedOptions& options)
       : job_(job),
-        run_(run),
+        run_(std::move(run)),
         ranks_(ranks),
         progress_(progress),
         options_(options),
@@ -176,7 +176,7 @@ class Coordinator {
     const uint64_t target = timed ? 0 : (settings.spp > 0 ? settings.spp : scene.sensor().sampler()->sample_count());
     const uint64_t pixels = uint64_t(film.width()) * film.height();
     if (progress_) progress_->pixel_samples_target = target * pixels;
-    const uint32_t max_pass = std::max(1u, run_.max_pass_samples());
+    const uint32_t max_pass = std::max(1u, run_->max_pass_samples());
     uint64_t done = 0, round = 0, rays = 0, last_count = 1;
     double last_round = 0;
     Clock::time_point last_collect = Clock::now();
@@ -247,7 +247,7 @@ class Coordinator {
       order({0, 0, round, 1, 1});
       collect_films();
     }
-    run_.finish(out_.result.film);
+    run_->finish(out_.result.film);
     RenderStats& stats = out_.result.stats;
     uint64_t spp = 0;
     for (IndexRange r : held_) spp += r.count;
@@ -258,8 +258,8 @@ class Coordinator {
     stats.dropped = out_.result.film.dropped_samples();
     stats.first_dropped = out_.result.film.first_dropped();
     stats.interrupted = out_.signalled || !out_.lost.empty() || (stopped() && (timed || done < target));
-    stats.variance_known = run_.variance_known();
-    stats.summary = run_.summary();
+    stats.variance_known = run_->variance_known();
+    stats.summary = run_->summary();
     stats.ranks = ranks_;
     const std::string ranges = join_ranges(held_);
     const std::string whole =
@@ -306,20 +306,19 @@ class Coordinator {
     own_film_->clear();
     const std::shared_ptr<FilmBuffer> film = own_film_;
     auto finished = std::make_shared<std::atomic<int>>(0);  // 1 completed, 2 stopped
-    // Not `this`: the thread may outlive the coordinator (see below).
+    // Not `this`: after a signal the thread outlives the coordinator, so it
+    // shares the run and the film (the job stays until the process ends).
     // The progress moves with rank 0's own samples during the round, and
     // takes every rank's at its end.
-    std::thread worker([&job = job_, &run = run_, progress = progress_, film, finished, share] {
+    std::thread worker([&job = job_, run = run_, progress = progress_, film, finished, share] {
       tbb::task_arena arena(thread_count(job));
       const PassTarget target{*film, progress, thread_count(job), job.settings().stop};
       bool completed = false;
-      arena.execute([&] { completed = render_share(run, share, target); });
+      arena.execute([&] { completed = render_share(*run, share, target); });
       finished->store(completed ? 1 : 2);
     });
     while (finished->load() == 0) {
       if (settings.stop && settings.stop->load()) {
-        // The thread keeps using the job and the run, which stay until the
-        // process ends (render_across_ranks leaves the run alive).
         worker.detach();
         out_.signalled = true;
         return false;
@@ -337,7 +336,7 @@ class Coordinator {
   }
 
   const RenderJob& job_;
-  IntegratorRun& run_;
+  std::shared_ptr<IntegratorRun> run_;
   int ranks_;
   RenderProgress* progress_;
   DistributedOptions options_;
@@ -384,17 +383,14 @@ std::optional<DistributedRender> render_across_ranks(const RenderJob& job, const
     if (session.rank() != 0) return std::nullopt;
     return DistributedRender{job.run(progress), {}, false};
   }
-  std::unique_ptr<IntegratorRun> run;
+  std::shared_ptr<IntegratorRun> run;
   tbb::task_arena arena(thread_count(job));
   arena.execute([&] { run = job.integrator().start(*job.scene(), job.settings().seed); });
   if (session.rank() != 0) {
     serve(job, *run, session.rank(), session.size());
     return std::nullopt;
   }
-  DistributedRender out = Coordinator(job, *run, session.size(), progress, options).run();
-  // A signalled render's own share may still be rendering with the run.
-  if (out.signalled) run.release();
-  return out;
+  return Coordinator(job, std::move(run), session.size(), progress, options).run();
 }
 
 std::string distributed_plan(const RenderJob& job, int ranks) {

@@ -106,10 +106,10 @@ class MpiRender(unittest.TestCase):
         self.assertIn("rank 0: error:", result.stderr)
         self.assertIn("none.ply", result.stderr)
 
-    def killed_part_way(self, recovery, kill_mpirun=False, ranks=2):
+    def killed_part_way(self, recovery, kill_mpirun=False, ranks=2, res=16):
         """Kills rank 1 (or sends mpirun a Ctrl-C) three seconds into a long
         render; its exit status, error output and partial image."""
-        args = ["render", BOX, "-D", "res=16", "--spp", "1000000", "--seed", "4", "--raw-sums", "-q",
+        args = ["render", BOX, "-D", f"res={res}", "--spp", "1000000", "--seed", "4", "--raw-sums", "-q",
                 "--rank-timeout", "2", "-o", str(self.out / "partial.exr"), "--exr-format", "float"]
         command = ["mpirun", "-n", str(ranks), "--oversubscribe"] + (["--enable-recovery"] if recovery else [])
         job = subprocess.Popen(command + [BINARY] + args, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -155,10 +155,10 @@ class MpiRender(unittest.TestCase):
         self.assertIn("rank 1", stderr)
         self.check_partial(partial)
 
-    # Ctrl-C reaches the ranks as mpirun's SIGTERM, mostly while rank 0
-    # renders its own share on its second thread.
+    # Ctrl-C reaches the ranks as mpirun's SIGTERM, at this size mostly while
+    # rank 0 renders its own share on its second thread.
     def test_ctrl_c_to_mpirun_leaves_the_collected_image(self):
-        _, stderr, partial = self.killed_part_way(recovery=False, kill_mpirun=True)
+        _, stderr, partial = self.killed_part_way(recovery=False, kill_mpirun=True, res=64)
         self.assertIn("caustica: stopped by a signal while the ranks rendered", stderr)
         self.assertNotIn("Segmentation fault", stderr)
         self.check_partial(partial)
@@ -176,7 +176,8 @@ class MpiRender(unittest.TestCase):
         self.assertEqual(counted, spp)
         self.assertTrue(np.all(np.isfinite(pixels)))
         last = max(int(r.split("-")[1]) for r in held.split(","))
-        more, _ = self.render([BINARY, "render", BOX, "-D", "res=16", "--spp", "4", "--seed", "4", "--raw-sums", "-q",
+        more, _ = self.render([BINARY, "render", BOX, "-D", f"res={pixels.shape[1]}", "--spp", "4", "--seed", "4",
+                               "--raw-sums", "-q",
                                "--first-sample", str(last + 1)], "more.exr")
         merged = self.out / "merged.exr"
         result = subprocess.run([BINARY, "merge", str(partial), str(more), "-o", str(merged)], capture_output=True,
