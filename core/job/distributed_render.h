@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +11,7 @@ namespace caustica {
 
 // Whether this process is one rank of a job that mpirun started (Open MPI
 // sets OMPI_COMM_WORLD_SIZE, PMIx launchers PMIX_RANK).
-bool started_by_mpirun();
+inline bool started_by_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK"); }
 
 // MPI from initialisation to finalisation, around one render. Throws
 // std::runtime_error where caustica was built without MPI.

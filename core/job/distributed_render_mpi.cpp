@@ -12,12 +12,11 @@
 
 #include "core/job/distributed_render.h"
 #include "core/job/rank_shares.h"
+#include "core/job/sample_ranges.h"
 #include "core/render/pass_schedule.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
-
-bool started_by_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK"); }
 
 RankSession::RankSession() {
   int provided = 0;
@@ -136,24 +135,6 @@ void serve(const RenderJob& job, IntegratorRun& run, int rank, int ranks) {
   }
 }
 
-std::string join_ranges(std::vector<IndexRange> ranges) {
-  std::sort(ranges.begin(), ranges.end(), [](IndexRange a, IndexRange b) { return a.first < b.first; });
-  std::vector<IndexRange> joined;
-  for (IndexRange r : ranges) {
-    if (r.count == 0) continue;
-    if (!joined.empty() && joined.back().first + joined.back().count == r.first)
-      joined.back().count += r.count;
-    else
-      joined.push_back(r);
-  }
-  std::string text;
-  for (IndexRange r : joined) {
-    if (!text.empty()) text.append(",");
-    text.append(std::to_string(r.first)).append("-").append(std::to_string(r.first + r.count - 1));
-  }
-  return text;
-}
-
 // Rank 0: orders the rounds, renders its own shares, collects the others'.
 class Coordinator {
  public:
@@ -261,7 +242,7 @@ class Coordinator {
     stats.variance_known = run_->variance_known();
     stats.summary = run_->summary();
     stats.ranks = ranks_;
-    const std::string ranges = join_ranges(held_);
+    const std::string ranges = format_ranges(joined_ranges(held_));
     const std::string whole =
         spp > 0 ? std::to_string(settings.first_sample) + "-" + std::to_string(settings.first_sample + spp - 1) : "";
     if (ranges != whole) stats.ranges = ranges;

@@ -9,8 +9,6 @@
 
 namespace caustica {
 
-bool started_by_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK"); }
-
 RankSession::RankSession() {
   throw std::runtime_error(
       "this caustica was built without MPI, so mpirun would make each rank render the whole image: install "

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/job/render_outputs.h"
+#include "core/job/sample_ranges.h"
 
 namespace caustica {
 
@@ -131,20 +132,13 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
                                     std::to_string(r.first) + " to " + std::to_string(r.last) + " against " +
                                     std::to_string(before.first) + " to " + std::to_string(before.last) + ")");
   }
-  std::vector<SampleRange> joined;
+  std::vector<IndexRange> held;
   uint64_t spp = 0;
   for (const auto& [r, part] : intervals) {
     spp += r.last - r.first + 1;
-    if (!joined.empty() && joined.back().last + 1 == r.first)
-      joined.back().last = r.last;
-    else
-      joined.push_back(r);
+    held.push_back({r.first, r.last - r.first + 1});
   }
-  std::string ranges;
-  for (const SampleRange& r : joined) {
-    if (!ranges.empty()) ranges.append(",");
-    ranges.append(std::to_string(r.first)).append("-").append(std::to_string(r.last));
-  }
+  const std::vector<IndexRange> joined = joined_ranges(std::move(held));
 
   const Image& shape = first.image;
   FilmBuffer film(shape.width, shape.height, film_channels(first, "caustica:raw_channels"));
@@ -159,7 +153,7 @@ RenderFile merge_sample_ranges(const std::vector<RenderFile>& input) {
 
   const bool variance_known = shape.channel_index("variance.R") >= 0;
   RenderFile merged{"", render_layers(film, aovs ? &*aovs : nullptr, variance_known, true), first.metadata};
-  merged.metadata["caustica:ranges"] = ranges;
+  merged.metadata["caustica:ranges"] = format_ranges(joined);
   merged.metadata["caustica:first_sample"] = std::to_string(joined.front().first);
   merged.metadata["caustica:spp"] = std::to_string(spp);
   // What one part's integrator reported of its run says nothing of the others'.

@@ -2,12 +2,9 @@
 
 #include <cstdint>
 
-namespace caustica {
+#include "core/job/sample_ranges.h"
 
-// A range of sample indices: [first, first + count).
-struct IndexRange {
-  uint64_t first = 0, count = 0;
-};
+namespace caustica {
 
 // Rank `rank`'s share of `range` among `ranks` ranks: the ranks take
 // contiguous pieces in rank order, of sizes differing by at most one; the
