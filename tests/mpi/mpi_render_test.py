@@ -19,8 +19,10 @@ BINARY = os.environ.get("CAUSTICA_BINARY", "build/caustica")
 SOURCE = Path(__file__).resolve().parents[2]
 GLASS = str(SOURCE / "scenes" / "cornell-box-glass.xml")
 BOX = str(SOURCE / "scenes" / "cornell-box.xml")
-# Open MPI refuses root unless told; CI and this machine run as root.
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+# Open MPI refuses root unless told (CI and this machine run as root), and
+# its shared-memory single copy needs ptrace rights containers often lack.
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 
 
 def mpirun(n, *args):
