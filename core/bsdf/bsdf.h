@@ -28,6 +28,9 @@ enum BsdfLobe : uint32_t {
   kDelta = kDeltaReflection | kDeltaTransmission,
   kReflection = kDiffuseReflection | kGlossyReflection | kDeltaReflection,
   kTransmission = kDiffuseTransmission | kGlossyTransmission | kDeltaTransmission,
+  // No scattering at all: light passes on unchanged (the boundary of a
+  // medium, index-matched). The walk steps through such surfaces.
+  kNull = 1u << 6,
 };
 
 struct BsdfContext {

@@ -1,5 +1,6 @@
 #include "core/camera/sensor.h"
 
+#include "core/media/medium.h"
 #include "core/registry/properties.h"
 #include "core/registry/registry.h"
 
@@ -17,7 +18,8 @@ std::shared_ptr<T> child_or_default(const Properties& props, const char* categor
 
 Sensor::Sensor(const Properties& props)
     : film_(child_or_default<Film>(props, "film", "hdrfilm")),
-      sampler_(child_or_default<Sampler>(props, "sampler", "independent")) {}
+      sampler_(child_or_default<Sampler>(props, "sampler", "independent")),
+      medium_(props.child<Medium>("medium")) {}
 
 std::vector<ParamSpec> clip_params() {
   return {{"near_clip", ParamType::Float, "0.01", "near plane distance"},

@@ -14,6 +14,7 @@
 
 namespace caustica {
 
+class Medium;
 class Properties;
 
 // Importance arriving at a reference point from the camera, for connecting
@@ -53,6 +54,8 @@ class Sensor : public Plugin {
 
   const std::shared_ptr<Film>& film() const { return film_; }
   const std::shared_ptr<Sampler>& sampler() const { return sampler_; }
+  // The medium the camera sits in (a nested <medium>), null for vacuum.
+  const Medium* medium() const { return medium_.get(); }
 
  protected:
   // Takes the nested film and sampler, or an hdrfilm and an independent
@@ -62,6 +65,7 @@ class Sensor : public Plugin {
  private:
   std::shared_ptr<Film> film_;
   std::shared_ptr<Sampler> sampler_;
+  std::shared_ptr<const Medium> medium_;
 };
 
 // near_clip and far_clip, as every sensor declares them.

@@ -47,7 +47,12 @@ int InfoCommand::run() const {
   std::printf("%s", describe(scene->features()).c_str());
   std::printf("what each integrator does with it (default parameters):\n");
   for (const std::string& name : Registry::instance().names("integrator")) {
-    const std::string plan = make_integrator(name)->plan(*scene);
+    const auto integrator = make_integrator(name);
+    if (scene->features().medium_walk && !integrator->renders_media()) {
+      std::printf("  %s: cannot render it (no participating media or null surfaces yet)\n", name.c_str());
+      continue;
+    }
+    const std::string plan = integrator->plan(*scene);
     if (!plan.empty()) std::printf("  %s\n", plan.c_str());
   }
   return 0;

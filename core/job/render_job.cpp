@@ -6,7 +6,9 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
     : scene_(std::move(scene)),
       settings_(std::move(settings)),
       integrator_(settings_.integrator.empty() ? scene_.integrator
-                                               : make_integrator(settings_.integrator, scene_.integrator_values)) {}
+                                               : make_integrator(settings_.integrator, scene_.integrator_values)) {
+  integrator_->check_scene(*scene_);
+}
 
 RenderResult RenderJob::run(RenderProgress* progress) const {
   const Film& film = *scene_->sensor().film();

@@ -12,6 +12,7 @@
 #include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
+#include "core/media/medium.h"
 #include "core/registry/file_resolver.h"
 #include "core/registry/ignored_params.h"
 #include "core/registry/properties.h"
@@ -20,8 +21,8 @@ namespace caustica {
 
 namespace {
 
-const std::set<std::string> kObjectTags = {"integrator", "sensor", "film",    "sampler", "rfilter",
-                                           "shape",      "bsdf",   "emitter", "texture", "tonemap"};
+const std::set<std::string> kObjectTags = {"integrator", "sensor",  "film",    "sampler", "rfilter", "shape",
+                                           "bsdf",       "emitter", "texture", "tonemap", "medium",  "phase"};
 const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float},     {"integer", ValueKind::Integer},
                                                      {"boolean", ValueKind::Boolean}, {"string", ValueKind::String},
                                                      {"rgb", ValueKind::Rgb},         {"point", ValueKind::Point},
@@ -183,10 +184,12 @@ class Instantiator {
   }
 
   void finish_shape(const std::shared_ptr<Shape>& shape, const Properties& props, const XmlNode& node) {
+    shape->set_media(props.get_object<Medium>("interior"), props.get_object<Medium>("exterior"));
     auto bsdf = props.child<Bsdf>("bsdf");
     if (!bsdf) {
-      // As in Mitsuba, a shape without a material is a grey diffuse one.
-      bsdf = Registry::instance().create_default<Bsdf>("bsdf", "diffuse", node.where);
+      // A shape without a material is a grey diffuse one, as in Mitsuba,
+      // unless it bounds media: then it is the media's index-matched boundary.
+      bsdf = Registry::instance().create_default<Bsdf>("bsdf", shape->bounds_media() ? "null" : "diffuse", node.where);
     }
     shape->set_bsdf(bsdf);
     if (auto emitter = props.child<Emitter>("emitter")) {

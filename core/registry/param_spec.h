@@ -6,7 +6,8 @@
 namespace caustica {
 
 // Ior: an index of refraction, a number or a material name such as "bk7".
-enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform, Ior };
+// Medium: a nested or referenced <medium>; it has no default.
+enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform, Ior, Medium };
 
 const char* to_string(ParamType t);
 

@@ -43,6 +43,8 @@ std::string parameter_tables_markdown() {
         out.append("| `").append(p.name).append("` | ").append(to_string(p.type)).append(" | ");
         if (p.default_value)
           out.append("`").append(cell(*p.default_value)).append("`");
+        else if (p.type == ParamType::Medium)
+          out.append("none (vacuum)");
         else
           out.append("required");
         out.append(" | ").append(cell(p.doc)).append(" |\n");

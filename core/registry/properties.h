@@ -56,6 +56,13 @@ class Properties {
   // that set_render_origin()'s point (the camera) is its origin.
   Transform get_transform(const std::string& name) const;
 
+  // The object given as parameter `name`, null where none was given.
+  template <class T>
+  std::shared_ptr<T> get_object(const std::string& name) const {
+    const PropertyValue* v = find(name);
+    return v ? std::dynamic_pointer_cast<T>(std::get<ObjectValue>(v->value).object) : nullptr;
+  }
+
   template <class T>
   std::vector<std::shared_ptr<T>> children(const std::string& category) const {
     std::vector<std::shared_ptr<T>> out;

@@ -130,6 +130,8 @@ bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_cate
       return given == ValueKind::Transform;
     case ParamType::Ior:
       return given == ValueKind::Float || given == ValueKind::Integer || given == ValueKind::String;
+    case ParamType::Medium:
+      return given == ValueKind::Object && object_category == "medium";
   }
   return false;
 }
@@ -155,6 +157,8 @@ ValueKind default_kind(ParamType t) {
       return ValueKind::Transform;
     case ParamType::Ior:
       return ValueKind::String;
+    case ParamType::Medium:
+      return ValueKind::Object;
   }
   return ValueKind::Float;
 }

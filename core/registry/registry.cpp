@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/registry/category_params.h"
 #include "core/registry/ignored_params.h"
 
 namespace caustica {
@@ -28,6 +29,8 @@ const char* to_string(ParamType t) {
       return "transform";
     case ParamType::Ior:
       return "float or IOR name";
+    case ParamType::Medium:
+      return "medium";
   }
   return "?";
 }
@@ -50,6 +53,12 @@ Registry& Registry::instance() {
 }
 
 bool Registry::add(PluginInfo info) {
+  for (const CategoryParams& shared : category_params())
+    if (shared.category == info.category) {
+      info.params.insert(info.params.end(), shared.params.begin(), shared.params.end());
+      info.child_categories.insert(info.child_categories.end(), shared.child_categories.begin(),
+                                   shared.child_categories.end());
+    }
   for (const IgnoredParam& ignored : ignored_params())
     if (ignored.category == info.category && !info.param(ignored.spec.name)) {
       info.params.push_back(ignored.spec);

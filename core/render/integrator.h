@@ -83,6 +83,11 @@ class Integrator : public Plugin {
   virtual bool splits_samples() const { return true; }
   // What a render across several processes does that the plan should say.
   virtual std::string distributed_note() const { return ""; }
+  // Whether it follows paths through participating media and null surfaces.
+  virtual bool renders_media() const { return false; }
+  // Throws std::invalid_argument, saying why, if it cannot render `scene`
+  // (a scene with media for an integrator that does not render them).
+  void check_scene(const Scene& scene) const;
   // Its name and parameters, for the output's metadata.
   std::string describe() const { return describe_parameters(); }
   // Starts a render of `scene` with the render's seed.

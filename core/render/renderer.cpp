@@ -11,6 +11,7 @@ namespace caustica {
 
 RenderStats render(const Scene& scene, const Integrator& integrator, const RenderOptions& options, FilmBuffer& film,
                    RenderProgress* progress) {
+  integrator.check_scene(scene);
   const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
   const bool timed = options.time_limit > 0;
@@ -63,6 +64,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Rende
 
 ReplayedSample replay_sample(const Scene& scene, const Integrator& integrator, Vec2i pixel, uint64_t index,
                              uint64_t seed) {
+  integrator.check_scene(scene);
   return integrator.start(scene, seed)->replay(pixel, index);
 }
 

@@ -1,9 +1,11 @@
 #include "core/scene/scene_features.h"
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
+#include "core/media/medium.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -44,13 +46,32 @@ std::string lobe_names(uint32_t lobes) {
   const std::pair<uint32_t, const char*> names[] = {
       {kDiffuseReflection, "diffuse reflection"}, {kDiffuseTransmission, "diffuse transmission"},
       {kGlossyReflection, "glossy reflection"},   {kGlossyTransmission, "glossy transmission"},
-      {kDeltaReflection, "delta reflection"},     {kDeltaTransmission, "delta transmission"}};
+      {kDeltaReflection, "delta reflection"},     {kDeltaTransmission, "delta transmission"},
+      {kNull, "null (index-matched boundaries)"}};
   for (const auto& [flag, name] : names)
     if (lobes & flag) {
       if (!out.empty()) out += ", ";
       out += name;
     }
   return out.empty() ? "none" : out;
+}
+
+void count_media(const Scene& scene, SceneFeatures& f) {
+  std::set<const Medium*> media;
+  for (const auto& s : scene.shapes()) {
+    if (s->interior()) media.insert(s->interior());
+    if (s->exterior()) media.insert(s->exterior());
+  }
+  if (const Medium* camera = scene.sensor().medium()) {
+    media.insert(camera);
+    f.camera_in_medium = true;
+  }
+  for (const Medium* m : media) {
+    f.heterogeneous_media += !m->is_homogeneous();
+    f.chromatic_media += m->is_chromatic();
+  }
+  f.media = int(media.size());
+  f.medium_walk = f.media > 0 || (f.lobes & kNull);
 }
 
 }  // namespace
@@ -87,6 +108,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
     f.caustic_paths = true;
     f.caustics_reason = "a light reaches a surface with a delta lobe: " + lit_specular->kind();
   }
+  count_media(scene, f);
   return f;
 }
 
@@ -97,6 +119,15 @@ std::string describe(const SceneFeatures& f) {
       << " environment\ntextures: " << (f.textures ? "yes" : "no") << "\ncamera: " << f.camera
       << (f.pinhole ? " (no lens to sample)" : " (a lens to sample)")
       << "\ncaustic paths: " << (f.caustic_paths ? "possible (" : "impossible (") << f.caustics_reason << ")\n";
+  out << "media: ";
+  if (f.media == 0) {
+    out << "none";
+  } else {
+    out << f.media << " (" << f.media - f.heterogeneous_media << " homogeneous, " << f.heterogeneous_media
+        << " heterogeneous; " << f.chromatic_media << " with extinction differing between channels)";
+    if (f.camera_in_medium) out << "; the camera sits in one";
+  }
+  out << "\n";
   return out.str();
 }
 

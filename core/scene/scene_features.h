@@ -21,6 +21,13 @@ struct SceneFeatures {
   // Glossy surfaces, however smooth, count as non-specular.
   bool caustic_paths = false;
   std::string caustics_reason;  // why caustic paths are possible or not
+  // Participating media: how many distinct ones shapes bound or the camera
+  // sits in, and what kinds.
+  int media = 0, heterogeneous_media = 0, chromatic_media = 0;
+  bool camera_in_medium = false;
+  // Paths must track media and step through null (index-matched) surfaces;
+  // where neither occurs the walk takes no medium branch at all.
+  bool medium_walk = false;
 };
 
 // Looks at the scene's materials, lights and camera; whether a light

@@ -13,6 +13,7 @@ namespace caustica {
 
 class Bsdf;
 class Emitter;
+class Medium;
 
 // A point sampled on a surface, with its density (per unit area from
 // sample_position, per unit solid angle from sample_seen_from). n is the
@@ -59,9 +60,21 @@ class Shape : public Plugin {
   void set_bsdf(std::shared_ptr<Bsdf> bsdf) { bsdf_ = std::move(bsdf); }
   void set_emitter(const Emitter* e) { emitter_ = e; }
 
+  // A shape given an interior or an exterior medium bounds media: a ray
+  // crossing it enters the medium on the side it leaves toward (none is
+  // vacuum). A ray crossing any other shape stays in the medium it was in.
+  bool bounds_media() const { return interior_ || exterior_; }
+  const Medium* interior() const { return interior_.get(); }
+  const Medium* exterior() const { return exterior_.get(); }
+  void set_media(std::shared_ptr<const Medium> interior, std::shared_ptr<const Medium> exterior) {
+    interior_ = std::move(interior);
+    exterior_ = std::move(exterior);
+  }
+
  private:
   std::shared_ptr<Bsdf> bsdf_;
   const Emitter* emitter_ = nullptr;
+  std::shared_ptr<const Medium> interior_, exterior_;
 };
 
 }  // namespace caustica

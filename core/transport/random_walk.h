@@ -13,8 +13,16 @@
 //   WalkAction at_vertex(const WalkVertex&)      the ray met a surface
 //   void escaped(const WalkEscape&)              the ray left the scene
 //   WalkAction scattered(const BsdfSample&)      the BSDF was sampled at the last vertex
-// and is called in that order along the path.
+// and is called in that order along the path. Visitors that handle media
+// also provide
+//   WalkAction at_medium_vertex(const MediumVertex&)   the ray scattered in a medium
+//   WalkAction scattered_in_medium(const PhaseSample&) the phase function was sampled there
+// and their walks, in scenes with media or null surfaces, sample free
+// flights along every segment and step through null surfaces (which are
+// no vertex and count no segment). Scenes with neither walk without a
+// medium branch.
 
+#include <concepts>
 #include <cstdint>
 #include <optional>
 
@@ -22,8 +30,10 @@
 #include "core/geometry/ray.h"
 #include "core/lights/emitter.h"
 #include "core/math/color.h"
+#include "core/media/medium.h"
 #include "core/sampling/sampler.h"
 #include "core/scene/scene.h"
+#include "core/transport/medium_crossing.h"
 #include "core/transport/walk_limits.h"
 
 namespace caustica {
@@ -49,6 +59,18 @@ struct WalkVertex {
   int64_t segments;  // from the walk's origin to here
   bool last;         // the length limit ends the walk here
   const Arrival& arrival;
+  const Medium* medium;  // the medium the ray arrived through (null: vacuum)
+};
+
+// A scattering event inside a medium.
+struct MediumVertex {
+  Vec3 p;
+  Vec3 wo;  // toward the previous vertex, unit length
+  const Medium& medium;
+  Color beta;  // the path's weight arriving here, sigma_s included
+  int64_t segments;
+  bool last;
+  const Arrival& arrival;
 };
 
 struct WalkEscape {
@@ -60,26 +82,67 @@ struct WalkEscape {
 
 enum class WalkAction { Continue, Stop };
 
-// Walks from `ray`, which carries `beta`, until the path escapes, a visitor
-// stops it, the BSDF absorbs it, roulette ends it, or it reaches
-// limits.max_segments.
 template <class Visitor>
-void random_walk(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
-                 Sampler& sampler, Visitor& visitor) {
+concept MediumVisitor = requires(Visitor& v, const MediumVertex& mv, const PhaseSample& ps) {
+  { v.at_medium_vertex(mv) } -> std::same_as<WalkAction>;
+  { v.scattered_in_medium(ps) } -> std::same_as<WalkAction>;
+};
+
+template <bool kMedia, class Visitor>
+void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
+                   Sampler& sampler, Visitor& visitor, const Medium* medium) {
   if (limits.max_segments == 0) return;
   Color throughput(1);
   float eta_scale = 1;
   Arrival arrival;
   for (int64_t segments = 1;; ++segments) {
-    const auto si = scene.intersect(ray);
+    auto si = scene.intersect(ray);
+    const bool last = limits.max_segments >= 0 && segments >= limits.max_segments;
+    if constexpr (kMedia) {
+      std::optional<float> t_scatter;  // the ray parameter of a scattering event in the medium
+      for (;;) {
+        if (medium) {
+          const FreeFlight flight = medium->sample_free_flight(ray, si ? si->t : kInfinity, sampler);
+          beta *= flight.weight;
+          throughput *= flight.weight;
+          if (flight.scattered) {
+            t_scatter = flight.t;
+            break;
+          }
+        }
+        if (!si || !is_null_surface(*si)) break;
+        medium = medium_after(*si, medium, ray.d);
+        ray = si->spawn(ray.d);
+        si = scene.intersect(ray);
+      }
+      if (beta.is_black()) return;
+      if (t_scatter) {
+        const Vec3 p = ray.at(*t_scatter);
+        const Vec3 wo = -normalize(ray.d);
+        if (visitor.at_medium_vertex(MediumVertex{p, wo, *medium, beta, segments, last, arrival}) == WalkAction::Stop ||
+            last)
+          return;
+        const auto ps = medium->phase().sample(wo, sampler.next_2d());
+        if (!ps || visitor.scattered_in_medium(*ps) == WalkAction::Stop) return;
+        // A phase function is sampled exactly: the weight p / pdf is 1.
+        arrival = {!medium->sample_emitters(), ps->pdf, {p, {}, {}}};
+        ray = {p, ps->wi, kInfinity};
+        float q = 1;
+        if (!limits.roulette.survives(segments, throughput, eta_scale, sampler, &q)) return;
+        beta *= 1 / q;
+        throughput *= 1 / q;
+        continue;
+      }
+    }
+
     if (!si) {
       visitor.escaped(WalkEscape{ray, beta, segments, arrival});
       return;
     }
     const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, mode);
     const Vec3 wo = -ray.d;
-    const bool last = limits.max_segments >= 0 && segments >= limits.max_segments;
-    if (visitor.at_vertex(WalkVertex{*si, bsdf, wo, beta, segments, last, arrival}) == WalkAction::Stop || last) return;
+    if (visitor.at_vertex(WalkVertex{*si, bsdf, wo, beta, segments, last, arrival, medium}) == WalkAction::Stop || last)
+      return;
 
     const float u_lobe = sampler.next_1d();
     const auto bs = bsdf.sample(wo, u_lobe, sampler.next_2d());
@@ -91,12 +154,28 @@ void random_walk(const Scene& scene, Ray ray, Color beta, TransportMode mode, co
     if (mode == TransportMode::Radiance && bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
     arrival = arrival_from(*si, *bs);
     ray = si->spawn(bs->wi);
+    if constexpr (kMedia) medium = medium_after(*si, medium, bs->wi);
 
     float q = 1;
     if (!limits.roulette.survives(segments, throughput, eta_scale, sampler, &q)) return;
     beta *= 1 / q;
     throughput *= 1 / q;
   }
+}
+
+// Walks from `ray`, which carries `beta` and starts in `medium`, until the
+// path escapes, a visitor stops it, the BSDF absorbs it, roulette ends it,
+// or it reaches limits.max_segments.
+template <class Visitor>
+void random_walk(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
+                 Sampler& sampler, Visitor& visitor, const Medium* medium = nullptr) {
+  if constexpr (MediumVisitor<Visitor>) {
+    if (scene.features().medium_walk) {
+      walk_segments<true>(scene, ray, beta, mode, limits, sampler, visitor, medium);
+      return;
+    }
+  }
+  walk_segments<false>(scene, ray, beta, mode, limits, sampler, visitor, nullptr);
 }
 
 }  // namespace caustica

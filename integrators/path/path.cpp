@@ -19,7 +19,7 @@
 namespace caustica {
 namespace {
 
-class PathIntegrator final : public RadianceIntegrator {
+class PathIntegrator : public RadianceIntegrator {
  public:
   explicit PathIntegrator(const Properties& props) : settings_(read_path_settings(props)) {}
 
@@ -27,19 +27,31 @@ class PathIntegrator final : public RadianceIntegrator {
     return trace_path(scene, ray, sampler, settings_);
   }
 
+  bool renders_media() const override { return true; }
+
   std::string plan(const Scene& scene) const override {
     const SceneFeatures& f = scene.features();
-    return std::string("path: next-event estimation and BSDF sampling combined by MIS") +
+    return plugin_name() + ": next-event estimation and BSDF sampling combined by MIS" +
            (f.environment_lights ? "" : "; no environment, escaping paths end at once") +
-           (f.caustic_paths ? "; caustics only by BSDF sampling (noisy)" : "");
+           (f.caustic_paths ? "; caustics only by BSDF sampling (noisy)" : "") +
+           (f.media ? "; media: free flights sampled, direct light at scattering events weighed against the phase "
+                      "function"
+                    : "; no media, the walk skips them");
   }
 
  private:
   PathSettings settings_;
 };
 
+// Mitsuba's name for its path tracer with media: the same integrator.
+class VolpathIntegrator final : public PathIntegrator {
+ public:
+  using PathIntegrator::PathIntegrator;
+};
+
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PathIntegrator, "integrator", "path", path_settings_params(), {});
+CAUSTICA_REGISTER_PLUGIN(VolpathIntegrator, "integrator", "volpath", path_settings_params(), {});
 
 }  // namespace caustica

@@ -2,6 +2,7 @@
 
 #include "core/render/direct_light.h"
 #include "core/scene/scene.h"
+#include "core/transport/direct_light_in_media.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 
@@ -9,7 +10,9 @@ namespace caustica {
 
 namespace {
 
-// Gathers emission met and next-event estimates along a camera walk.
+// Gathers emission met and next-event estimates along a camera walk; with
+// kMedia, through media and null surfaces too.
+template <bool kMedia>
 class PathRadiance {
  public:
   PathRadiance(const Scene& scene, Sampler& sampler, const PathSettings& settings, const CausticEstimator* caustics)
@@ -23,7 +26,12 @@ class PathRadiance {
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
     const bool non_delta = v.bsdf.lobes() & ~kDelta;
-    if (non_delta) L += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light);
+    if (non_delta) {
+      if constexpr (kMedia)
+        L += v.beta * sample_direct_light_in_media(scene_, v.si, v.bsdf, v.wo, v.medium, sampler_, u_select, u_light);
+      else
+        L += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light);
+    }
     if (non_delta && caustics_) L += v.beta * caustics_->estimate(v.si, v.bsdf, v.wo, v.segments);
     return WalkAction::Continue;
   }
@@ -33,6 +41,17 @@ class PathRadiance {
       emission_from_environment(scene_, e.ray.d, e.arrival, {},
                                 [&](const Emitter&, Color Le, float w) { L += e.beta * Le * w; });
   }
+
+  WalkAction at_medium_vertex(const MediumVertex& v) requires kMedia {
+    if (v.last) return WalkAction::Stop;
+    const float u_select = sampler_.next_1d();
+    const Vec2 u_light = sampler_.next_2d();
+    if (v.medium.sample_emitters())
+      L += v.beta * sample_direct_light_at_medium_point(scene_, v.p, v.medium, v.wo, sampler_, u_select, u_light);
+    return WalkAction::Continue;
+  }
+
+  WalkAction scattered_in_medium(const PhaseSample&) requires kMedia { return WalkAction::Continue; }
 
   WalkAction scattered(const BsdfSample& bs) {
     if (caustics_ && !bs.is_delta()) {
@@ -66,7 +85,13 @@ class PathRadiance {
 
 Color trace_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
                  const CausticEstimator* caustics) {
-  PathRadiance radiance(scene, sampler, settings, caustics);
+  if (scene.features().medium_walk) {
+    PathRadiance<true> radiance(scene, sampler, settings, caustics);
+    random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance,
+                scene.sensor().medium());
+    return radiance.L;
+  }
+  PathRadiance<false> radiance(scene, sampler, settings, caustics);
   random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance);
   return radiance.L;
 }

@@ -1,0 +1,39 @@
+#include "core/transport/direct_light_in_media.h"
+
+#include "core/media/medium.h"
+#include "core/render/direct_light.h"
+#include "core/scene/scene.h"
+#include "core/transport/medium_crossing.h"
+#include "core/transport/shadow_transmittance.h"
+
+namespace caustica {
+
+Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
+                                   const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light) {
+  const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
+  if (!light) return {};
+  const LiSample& ls = light->ls;
+  const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
+  if (f.is_black()) return {};
+  const Color tr = shadow_transmittance(scene, shadow_ray(si, ls), medium_after(si, arrived_in, ls.wi), sampler);
+  if (tr.is_black()) return {};
+  return f * tr * ls.Li * (light->mis_weight(bsdf.pdf(wo, ls.wi)) / light->pdf);
+}
+
+Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,
+                                          float u_select, Vec2 u_light) {
+  const auto light = choose_light(scene, {p, {}, {}}, u_select, u_light);
+  if (!light) return {};
+  const LiSample& ls = light->ls;
+  const float phase = medium.phase().eval(wo, ls.wi);
+  if (!(phase > 0)) return {};
+  // A point in a medium has no error to step off: the ray leaves from it.
+  SurfaceInteraction at;
+  at.p = p;
+  const Ray shadow = shadow_ray(at, ls);
+  const Color tr = shadow_transmittance(scene, shadow, &medium, sampler);
+  if (tr.is_black()) return {};
+  return tr * ls.Li * (phase * light->mis_weight(phase) / light->pdf);
+}
+
+}  // namespace caustica

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "core/bsdf/surface_bsdf.h"
+#include "core/math/color.h"
+#include "core/sampling/sampler.h"
+
+namespace caustica {
+
+class Medium;
+class Scene;
+
+// Next-event estimation where paths cross media and null surfaces: as
+// sample_direct_light (core/render/direct_light.h), the shadow ray's
+// visibility replaced by its transmittance.
+
+// At a surface point reached through `arrived_in` (the medium on wo's side).
+Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
+                                   const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light);
+
+// At a scattering event at p inside `medium`, weighed against sampling its
+// phase function.
+Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,
+                                          float u_select, Vec2 u_light);
+
+}  // namespace caustica

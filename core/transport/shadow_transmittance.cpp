@@ -1,0 +1,33 @@
+#include "core/transport/shadow_transmittance.h"
+
+#include <cmath>
+
+#include "core/bsdf/bsdf.h"
+#include "core/media/medium.h"
+#include "core/scene/scene.h"
+#include "core/transport/medium_crossing.h"
+
+namespace caustica {
+
+bool is_null_surface(const SurfaceInteraction& si) { return si.shape->lobes() == kNull; }
+
+Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sampler& sampler) {
+  // Where the segment ends, so that it can be resumed past each null surface.
+  const bool infinite = std::isinf(ray.t_max);
+  const Vec3 end = infinite ? Vec3() : ray.at(ray.t_max);
+  Color tr(1);
+  for (;;) {
+    const auto si = scene.intersect(ray);
+    if (si && !is_null_surface(*si)) return {};
+    if (medium) {
+      tr *= medium->transmittance(ray, si ? si->t : ray.t_max, sampler);
+      if (tr.is_black()) return {};
+    }
+    if (!si) return tr;
+    medium = medium_after(*si, medium, ray.d);
+    const Ray next = si->spawn(ray.d);
+    ray = infinite ? next : Ray{next.o, end - next.o, 1};
+  }
+}
+
+}  // namespace caustica

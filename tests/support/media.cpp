@@ -1,0 +1,16 @@
+#include "tests/support/media.h"
+
+#include "tests/support/test_scenes.h"
+
+namespace caustica::test {
+
+std::shared_ptr<const Medium> make_medium(const std::string& element) {
+  const std::string named = "<medium name='interior' " + element.substr(element.find("<medium") + 7);
+  const auto scene =
+      scene_from_xml("<scene version='3.0.0'><shape type='rectangle'>" + named + "</shape></scene>", "medium.xml");
+  const Shape& shape = *scene->shapes().front();
+  // The shape holds the medium; the copy shares its ownership with the scene.
+  return std::shared_ptr<const Medium>(scene.scene, shape.interior());
+}
+
+}  // namespace caustica::test
