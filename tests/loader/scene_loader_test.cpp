@@ -205,7 +205,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<shape type='sphere'>\n<float name='radius' value='1'/>\n"
                  "<float name='radios' value='1'/></shape></scene>",
                  "bad.xml:4: unknown parameter 'radios' for shape 'sphere' (accepted: center, radius, to_world, "
-                 "flip_normals, silhouette_sampling_weight)"},
+                 "flip_normals, interior, exterior, silhouette_sampling_weight)"},
         BadInput{"wrong value type",
                  "<scene version='3.0.0'>\n<sensor type='perspective'>\n<string name='fov' value='wide'/>"
                  "</sensor></scene>",
