@@ -21,8 +21,8 @@ namespace caustica {
 
 namespace {
 
-const std::set<std::string> kObjectTags = {"integrator", "sensor",  "film",    "sampler", "rfilter", "shape",
-                                           "bsdf",       "emitter", "texture", "tonemap", "medium",  "phase"};
+const std::set<std::string> kObjectTags = {"integrator", "sensor",  "film",    "sampler", "rfilter", "shape", "bsdf",
+                                           "emitter",    "texture", "tonemap", "medium",  "phase",   "volume"};
 const std::map<std::string, ValueKind> kValueTags = {{"float", ValueKind::Float},     {"integer", ValueKind::Integer},
                                                      {"boolean", ValueKind::Boolean}, {"string", ValueKind::String},
                                                      {"rgb", ValueKind::Rgb},         {"point", ValueKind::Point},

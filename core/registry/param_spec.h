@@ -7,7 +7,8 @@ namespace caustica {
 
 // Ior: an index of refraction, a number or a material name such as "bk7".
 // Medium: a nested or referenced <medium>; it has no default.
-enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform, Ior, Medium };
+// Volume: a nested <volume>, or a number or colour the same everywhere.
+enum class ParamType { Boolean, Integer, Float, String, Color, Texture, Point, Vector, Transform, Ior, Medium, Volume };
 
 const char* to_string(ParamType t);
 

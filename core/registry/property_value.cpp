@@ -132,6 +132,9 @@ bool kind_fits(ValueKind given, ParamType wanted, const std::string& object_cate
       return given == ValueKind::Float || given == ValueKind::Integer || given == ValueKind::String;
     case ParamType::Medium:
       return given == ValueKind::Object && object_category == "medium";
+    case ParamType::Volume:
+      return given == ValueKind::Rgb || given == ValueKind::Float || given == ValueKind::Integer ||
+             (given == ValueKind::Object && object_category == "volume");
   }
   return false;
 }
@@ -148,6 +151,7 @@ ValueKind default_kind(ParamType t) {
       return ValueKind::String;
     case ParamType::Color:
     case ParamType::Texture:
+    case ParamType::Volume:
       return ValueKind::Rgb;
     case ParamType::Point:
       return ValueKind::Point;

@@ -31,6 +31,8 @@ const char* to_string(ParamType t) {
       return "float or IOR name";
     case ParamType::Medium:
       return "medium";
+    case ParamType::Volume:
+      return "volume";
   }
   return "?";
 }

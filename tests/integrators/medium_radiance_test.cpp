@@ -17,11 +17,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/render/direct_light.h"
 #include "core/transport/direct_light_in_media.h"
 #include "tests/support/samplers.h"
 #include "tests/support/test_scenes.h"
+#include "tests/support/vol_writer.h"
 #include "tests/support/z_test.h"
 
 namespace caustica {
@@ -29,7 +31,7 @@ namespace {
 
 using testing::HasSubstr;
 
-constexpr int kChecks = 8 * 3;
+constexpr int kChecks = 9 * 3;
 const double kZCritical = test::two_sided_z_critical(1 - std::pow(1 - 0.001, 1.0 / kChecks));
 
 std::string medium(const std::string& id, const std::string& sigma_t, const std::string& albedo,
@@ -82,6 +84,25 @@ TEST(MediumRadiance, ScatteringMediumInAFurnaceChangesNothing) {
       sphere_scene("volpath", medium("fog", "0.5, 2, 6", "1", "<phase type='hg'><float name='g' value='0.6'/></phase>"),
                    "fog", 0.5f),
       Color(2), 64, 2, "chromatic, forward scattering");
+}
+
+TEST(MediumRadiance, HeterogeneousMediumInAFurnaceChangesNothing) {
+  // A 4^3 grid of uneven extinction (some voxels empty, channels differing)
+  // spread over [-1, 1]^3, around the camera and the whole sphere.
+  const auto dir = std::filesystem::temp_directory_path() / "caustica_medium_radiance_test";
+  std::filesystem::create_directories(dir);
+  std::vector<float> values;
+  for (int i = 0; i < 64; ++i)
+    for (int c = 0; c < 3; ++c) values.push_back(float((i * 7 + c * 3) % 5) * (c + 1) * 0.6f);
+  test::write_vol_file(dir / "uneven.vol", 4, 4, 4, 3, values);
+  const std::string smoke =
+      "<medium type='heterogeneous' id='smoke'><volume type='gridvolume' name='sigma_t'><string name='filename' "
+      "value='" +
+      (dir / "uneven.vol").string() +
+      "'/><transform name='to_world'><scale value='2'/><translate value='-1, -1, -1'/></transform></volume>"
+      "<float name='albedo' value='1'/><integer name='majorant_resolution_factor' value='2'/>"
+      "<phase type='hg'><float name='g' value='0.5'/></phase></medium>";
+  expect_radiance(sphere_scene("path", smoke, "smoke", 0.5f), Color(2), 64, 7, "heterogeneous");
 }
 
 TEST(MediumRadiance, NestedMediaBehindNullBoundariesChangeNothing) {

@@ -1,5 +1,6 @@
 #include "tests/support/media.h"
 
+#include "core/registry/properties.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica::test {
@@ -11,6 +12,15 @@ std::shared_ptr<const Medium> make_medium(const std::string& element) {
   const Shape& shape = *scene->shapes().front();
   // The shape holds the medium; the copy shares its ownership with the scene.
   return std::shared_ptr<const Medium>(scene.scene, shape.interior());
+}
+
+std::shared_ptr<const Volume> make_grid_volume(const std::filesystem::path& file, const std::string& filter) {
+  const PluginInfo& info = *Registry::instance().find("volume", "gridvolume");
+  const SourceLocation where{"grid.xml", 1};
+  Properties props(info, where);
+  props.set("filename", {ValueKind::String, file.string(), where});
+  props.set("filter_type", {ValueKind::String, filter, where});
+  return std::dynamic_pointer_cast<const Volume>(info.create(props));
 }
 
 }  // namespace caustica::test
