@@ -9,6 +9,10 @@ class UnknownIntegrator(Exception):
     """The binary has no integrator of that name (it may not have landed yet)."""
 
 
+class SceneRefused(Exception):
+    """The integrator cannot render this scene (media, for one that does not render them yet)."""
+
+
 class Caustica:
     def __init__(self, binary, threads, launcher=(), env=None):
         """`launcher` prefixes each command (mpirun -n 2, for a render across ranks)."""
@@ -24,6 +28,8 @@ class Caustica:
             message = result.stderr.strip() or result.stdout.strip()
             if "unknown integrator" in message:
                 raise UnknownIntegrator(message)
+            if "does not render" in message:
+                raise SceneRefused(message)
             raise RuntimeError(f"caustica {args[0]} failed: {message}")
         return result.stdout
 

@@ -8,7 +8,7 @@ against the reference as `caustica compare` measures it.
 
 import csv
 
-from caustica_cli import UnknownIntegrator
+from caustica_cli import SceneRefused, UnknownIntegrator
 from suite_config import RUN_SEED_BASE
 
 FIELDS = ["scene", "integrator", "spp", "seconds", "samples", "rays", "threads", "mse", "mse_corrected", "rel_mse",
@@ -68,6 +68,9 @@ def run_scene(caustica, scene_name, scene_path, reference, integrators, ladder, 
         except UnknownIntegrator as e:
             skipped[integrator] = str(e)
             log(f"  skipping integrator '{integrator}': {e}")
+        except SceneRefused as e:
+            skipped[f"{integrator} on {scene_name}"] = str(e)
+            log(f"  skipping integrator '{integrator}' on {scene_name}: {e}")
     return rows
 
 

@@ -21,8 +21,9 @@ def runs(integrators, samplers):
     return [i if s == SAMPLERS[0] else f"{i}@{s}" for i in integrators for s in samplers]
 
 
-# The Cornell-box family: diffuse, glass (caustics), mirror, glossy metal.
-SCENES = ["cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"]
+# The Cornell-box family: diffuse, glass (caustics), mirror, glossy metal, and
+# filled with fog (integrators that do not render media are skipped there).
+SCENES = ["cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy", "cornell-box-fog"]
 
 # The reference is the converged image of the full light transport; an
 # integrator that estimates something else (direct: one bounce only) shows

@@ -15,7 +15,7 @@
 // voxels to a cell along each axis; 0 is one bound for the whole grid), and
 // transmittance is estimated by ratio tracking. Where channels differ the
 // tracking is spectral (Kutz et al. 2017): the chance of a real collision
-// is the throughput-weighted average of sigma_t over the majorant, and each
+// is the path-weighted average of sigma_t over the majorant, and each
 // channel's weight corrects for it, so every channel stays unbiased.
 
 #include <algorithm>
@@ -56,7 +56,7 @@ class HeterogeneousMedium final : public Medium {
     read_common(props);
   }
 
-  FreeFlight sample_free_flight(const Ray& ray, float t_max, Sampler& sampler) const override {
+  FreeFlight sample_free_flight(const Ray& ray, float t_max, Color beta, Sampler& sampler) const override {
     const float length = caustica::length(ray.d);
     Color w(1);
     std::optional<float> t_scatter;
@@ -74,9 +74,11 @@ class HeterogeneousMedium final : public Medium {
           t_scatter = t;
           return false;
         }
-        const float mean_w = w.average();
-        if (!(mean_w > 0)) return false;
-        const float p_real = std::min(1.0f, (sigma_t * w).average() / (majorant * mean_w));
+        // The path's weight through the tracking so far decides the chance.
+        const Color path = beta * w;
+        const float mean_path = path.average();
+        if (!(mean_path > 0)) return false;
+        const float p_real = std::min(1.0f, (sigma_t * path).average() / (majorant * mean_path));
         if (sampler.next_1d() < p_real) {
           w *= sigma_t * albedo_->eval(p) * (1 / (majorant * p_real));
           t_scatter = t;

@@ -10,9 +10,10 @@
 //   </medium>
 //
 // Distances are sampled analytically (exp(-sigma_t s)); with coefficients
-// that differ between channels one channel, chosen uniformly, draws the
-// distance and the weight divides by the density averaged over channels
-// (one-sample multiple importance sampling between the channels).
+// that differ between channels one channel, chosen in proportion to the
+// path's weight in it, draws the distance and the weight divides by the
+// density averaged over channels with those chances (one-sample multiple
+// importance sampling between the channels).
 
 #include <cmath>
 
@@ -48,24 +49,30 @@ class HomogeneousMedium final : public Medium {
     read_common(props);
   }
 
-  FreeFlight sample_free_flight(const Ray& ray, float t_max, Sampler& sampler) const override {
+  FreeFlight sample_free_flight(const Ray& ray, float t_max, Color beta, Sampler& sampler) const override {
     const float length = caustica::length(ray.d);
     const float segment = t_max * length;
     float u = sampler.next_1d();
     int channel = 0;
+    Color share(1, 0, 0);  // each channel's chance of drawing the distance
     if (is_chromatic()) {
-      channel = std::min(int(u * 3), 2);
-      u = u * 3 - float(channel);
+      const float total = beta.r + beta.g + beta.b;
+      share = total > 0 ? beta * (1 / total) : Color(1.0f / 3);
+      float start = 0;
+      while (channel < 2 && u >= start + share[channel]) start += share[channel++];
+      u = std::min((u - start) / share[channel], 0x1.fffffep-1f);
     }
     const float sigma = sigma_t_[channel];
     const float s = sigma > 0 ? -std::log1p(-u) / sigma : kInfinity;
     if (s < segment) {
       const Color tr = exp_of(sigma_t_ * -s);
-      const float pdf = is_chromatic() ? (sigma_t_ * tr).average() : sigma * tr[channel];
+      const Color pdfs = sigma_t_ * tr * share;
+      const float pdf = pdfs.r + pdfs.g + pdfs.b;
       return {true, s / length, pdf > 0 ? tr * sigma_s_ * (1 / pdf) : Color()};
     }
     const Color tr = transmittance_over(segment);
-    const float pass = is_chromatic() ? tr.average() : tr[channel];
+    const Color passes = tr * share;
+    const float pass = passes.r + passes.g + passes.b;
     return {false, 0, pass > 0 ? tr * (1 / pass) : Color()};
   }
 

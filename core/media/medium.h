@@ -16,8 +16,8 @@ struct FreeFlight {
   float t = 0;             // its ray parameter, when scattered
   // What the path's weight is multiplied by: transmittance times sigma_s
   // over the density of the event sampled (a scattering at t, or passing
-  // the whole segment). Unbiased for every channel whichever channel drew
-  // the distance.
+  // the whole segment), averaged over the channels that could have drawn
+  // it (one-sample MIS between channels): unbiased for every channel.
   Color weight{1};
 };
 
@@ -29,8 +29,12 @@ struct FreeFlight {
 class Medium : public Plugin {
  public:
   // Samples where a ray (not necessarily of unit direction) travelling
-  // from its origin first interacts before ray parameter t_max.
-  virtual FreeFlight sample_free_flight(const Ray& ray, float t_max, Sampler& sampler) const = 0;
+  // from its origin first interacts before ray parameter t_max, for a path
+  // whose weight is `beta`. Where channels differ, they share the sampling
+  // in proportion to beta, which keeps the sum of beta's channels from
+  // growing at any event (a uniform share lets one channel's weight grow
+  // without bound over many scatterings).
+  virtual FreeFlight sample_free_flight(const Ray& ray, float t_max, Color beta, Sampler& sampler) const = 0;
   // The transmittance from the ray's origin to ray parameter t_max (an
   // unbiased estimate where it is not known in closed form).
   virtual Color transmittance(const Ray& ray, float t_max, Sampler& sampler) const = 0;

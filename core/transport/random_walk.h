@@ -102,7 +102,7 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       std::optional<float> t_scatter;  // the ray parameter of a scattering event in the medium
       for (;;) {
         if (medium) {
-          const FreeFlight flight = medium->sample_free_flight(ray, si ? si->t : kInfinity, sampler);
+          const FreeFlight flight = medium->sample_free_flight(ray, si ? si->t : kInfinity, beta, sampler);
           beta *= flight.weight;
           throughput *= flight.weight;
           if (flight.scattered) {

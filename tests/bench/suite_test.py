@@ -82,6 +82,24 @@ class TinySuite(unittest.TestCase):
         self.assertIn("Skipped: no-such-integrator", summary)
 
 
+class SceneWithMedia(unittest.TestCase):
+    """On the fog box, an integrator that does not render media is skipped
+    for that scene alone, and the others run."""
+
+    def test_refusing_integrator_is_skipped_per_scene(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            result = subprocess.run(
+                ["/usr/bin/python3", str(ROOT / "bench" / "suite.py"), "--scale", "tiny", "--out", tmp, "--caustica",
+                 BINARY, "--threads", "2", "--integrators", "path,bdpt", "--samplers", "independent", "--scenes",
+                 "cornell-box-fog"],
+                capture_output=True, text=True)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("skipping integrator 'bdpt' on cornell-box-fog", result.stdout)
+            with open(Path(tmp) / "convergence.csv") as f:
+                rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+            self.assertEqual({(r["scene"], r["integrator"]) for r in rows}, {("cornell-box-fog", "path")})
+
+
 class ResumableReference(unittest.TestCase):
     def test_only_missing_chunks_are_rendered(self):
         with tempfile.TemporaryDirectory() as tmp:

@@ -31,7 +31,7 @@ namespace {
 
 using testing::HasSubstr;
 
-constexpr int kChecks = 9 * 3;
+constexpr int kChecks = 10 * 3;
 const double kZCritical = test::two_sided_z_critical(1 - std::pow(1 - 0.001, 1.0 / kChecks));
 
 std::string medium(const std::string& id, const std::string& sigma_t, const std::string& albedo,
@@ -127,6 +127,13 @@ TEST(MediumRadiance, AbsorbingMediumAttenuatesByBeerLambert) {
       "<shape type='sphere'><float name='radius' value='0.5'/><ref name='interior' id='ink'/></shape>";
   expect_radiance(sphere_scene("path", medium("ink", "0.5, 1, 3", "0"), "ink", 0, ink_ball),
                   Color(std::exp(-0.25f), std::exp(-0.5f), std::exp(-1.5f)), 64, 5, "absorbing ball");
+  // The same ball in glass of index 1: the ray leaves the ink where it is
+  // refracted out, not where a null boundary lets it through.
+  const std::string glass_ball =
+      "<shape type='sphere'><float name='radius' value='0.5'/><bsdf type='dielectric'><float name='int_ior' "
+      "value='1'/><float name='ext_ior' value='1'/></bsdf><ref name='interior' id='ink'/></shape>";
+  expect_radiance(sphere_scene("path", medium("ink", "0.5, 1, 3", "0"), "ink", 0, glass_ball),
+                  Color(std::exp(-0.25f), std::exp(-0.5f), std::exp(-1.5f)), 64, 8, "absorbing glass ball");
 }
 
 // A of the comment above, for a ball of radius a and extinction sigma.

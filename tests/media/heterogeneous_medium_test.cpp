@@ -27,8 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::HasSubstr;
 
-// 10 ratio- and delta-tracking z-tests, 1 chi-square, 6 spectral z-tests.
-const double kAlpha = 1 - std::pow(1 - 0.001, 1.0 / 17);
+// 10 ratio- and delta-tracking z-tests, 1 chi-square, 12 spectral z-tests.
+const double kAlpha = 1 - std::pow(1 - 0.001, 1.0 / 23);
 
 const float kScale = 2;
 // Voxel values along x of a 4 x 1 x 1 grid, per channel.
@@ -133,7 +133,8 @@ TEST(HeterogeneousMedium, TrackingSkipsEmptyCellsAndNoOther) {
   expect_mean(estimates, std::exp(-depth), "ratio tracking");
   int passed = 0;
   const int n = 40000;
-  for (int i = 0; i < n; ++i) passed += !m->sample_free_flight({{-0.5f, 0.5f, 0.5f}, {1, 0, 0}}, 2, s.at(i)).scattered;
+  for (int i = 0; i < n; ++i)
+    passed += !m->sample_free_flight({{-0.5f, 0.5f, 0.5f}, {1, 0, 0}}, 2, Color(1), s.at(i)).scattered;
   // Passing is a Bernoulli trial of probability exp(-depth).
   const double p = std::exp(-depth);
   EXPECT_LT(std::abs(passed / double(n) - p), test::two_sided_z_critical(kAlpha) * std::sqrt(p * (1 - p) / n));
@@ -174,7 +175,7 @@ TEST(HeterogeneousMedium, DeltaTrackingCollidesWithTheAnalyticDensity) {
   std::vector<double> observed(bins + 1, 0), expected(bins + 1, 0);
   Samples s;
   for (int i = 0; i < n; ++i) {
-    const FreeFlight f = m->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, 1, s.at(i));
+    const FreeFlight f = m->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, 1, Color(1), s.at(i));
     if (f.scattered) {
       ASSERT_NEAR(f.weight.r, 0.6f, 1e-5f);
       ++observed[std::min(bins - 1, int(f.t * bins))];
@@ -191,22 +192,26 @@ TEST(HeterogeneousMedium, DeltaTrackingCollidesWithTheAnalyticDensity) {
 }
 
 TEST(HeterogeneousMedium, SpectralTrackingIsUnbiasedPerChannel) {
+  // For a grey path and for one whose weight lies mostly in the last channel.
   const Color albedo(0.9f, 0.5f, 0.3f);
   const auto m = ramp_medium(3, "0.9, 0.5, 0.3");
   ASSERT_TRUE(m->is_chromatic());
-  std::vector<double> pass[3], first_half[3];
-  Samples s;
-  for (int i = 0; i < 100000; ++i) {
-    const FreeFlight f = m->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, 1, s.at(i));
-    for (int c = 0; c < 3; ++c) {
-      pass[c].push_back(f.scattered ? 0 : f.weight[c]);
-      first_half[c].push_back(f.scattered && f.t < 0.5f ? f.weight[c] : 0);
+  for (const Color beta : {Color(1), Color(0.05f, 0.3f, 1)}) {
+    std::vector<double> pass[3], first_half[3];
+    Samples s;
+    for (int i = 0; i < 100000; ++i) {
+      const FreeFlight f = m->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, 1, beta, s.at(i));
+      for (int c = 0; c < 3; ++c) {
+        pass[c].push_back(f.scattered ? 0 : f.weight[c]);
+        first_half[c].push_back(f.scattered && f.t < 0.5f ? f.weight[c] : 0);
+      }
     }
-  }
-  for (int c = 0; c < 3; ++c) {
-    expect_mean(pass[c], std::exp(-depth_to(1, c)), "passing, channel " + std::to_string(c));
-    expect_mean(first_half[c], albedo[c] * (1 - std::exp(-depth_to(0.5, c))),
-                "scattering in the first half, channel " + std::to_string(c));
+    const std::string path = " (path weight " + std::to_string(beta.r) + ")";
+    for (int c = 0; c < 3; ++c) {
+      expect_mean(pass[c], std::exp(-depth_to(1, c)), "passing, channel " + std::to_string(c) + path);
+      expect_mean(first_half[c], albedo[c] * (1 - std::exp(-depth_to(0.5, c))),
+                  "scattering in the first half, channel " + std::to_string(c) + path);
+    }
   }
 }
 
@@ -215,7 +220,7 @@ TEST(HeterogeneousMedium, EmptyAndDenseGridsStayFinite) {
   const auto empty = test::make_medium(
       "<medium type='heterogeneous'><volume type='gridvolume' name='sigma_t'><string name='filename' value='" +
       grid_file("ramp1.vol", 1).string() + "'/></volume><float name='scale' value='0'/></medium>");
-  const FreeFlight f = empty->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, kInfinity, s.at(0));
+  const FreeFlight f = empty->sample_free_flight({{0, 0.5f, 0.5f}, {1, 0, 0}}, kInfinity, Color(1), s.at(0));
   EXPECT_FALSE(f.scattered);
   EXPECT_EQ(f.weight, Color(1));
   EXPECT_EQ(empty->transmittance({{0, 0.5f, 0.5f}, {1, 0, 0}}, kInfinity, s.at(0)), Color(1));
@@ -225,7 +230,7 @@ TEST(HeterogeneousMedium, EmptyAndDenseGridsStayFinite) {
       "'/></volume><float name='scale' value='1e6'/><integer name='majorant_resolution_factor' value='1'/></medium>");
   for (int i = 0; i < 100; ++i) {
     // Through the third voxel, where the grid is 0, and on into the dense fourth.
-    const FreeFlight d = dense->sample_free_flight({{0.6f, 0.5f, 0.5f}, {1, 0, 0}}, 1, s.at(i));
+    const FreeFlight d = dense->sample_free_flight({{0.6f, 0.5f, 0.5f}, {1, 0, 0}}, 1, Color(1), s.at(i));
     EXPECT_TRUE(d.scattered);
     EXPECT_TRUE(d.weight.is_finite());
     EXPECT_EQ(dense->transmittance({{0.6f, 0.5f, 0.5f}, {1, 0, 0}}, 1, s.at(i)), Color(0));

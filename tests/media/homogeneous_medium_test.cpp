@@ -20,8 +20,8 @@ namespace {
 
 using testing::HasSubstr;
 
-// 1 chi-square test and 6 z-tests.
-const double kAlpha = 1 - std::pow(1 - 0.001, 1.0 / 7);
+// 1 chi-square test and 12 z-tests.
+const double kAlpha = 1 - std::pow(1 - 0.001, 1.0 / 13);
 
 std::shared_ptr<const Medium> homogeneous(const std::string& sigma_t, const std::string& albedo) {
   return test::make_medium("<medium type='homogeneous'><rgb name='sigma_t' value='" + sigma_t +
@@ -59,7 +59,7 @@ TEST(HomogeneousMedium, FreeFlightDistancesFollowTheExponential) {
   Samples s;
   for (int i = 0; i < n; ++i) {
     // Direction of length 4: the segment's ray parameters are a quarter of its distances.
-    const FreeFlight f = m->sample_free_flight({{0, 0, 0}, {0, 0, 4}}, segment / 4, s.at(i));
+    const FreeFlight f = m->sample_free_flight({{0, 0, 0}, {0, 0, 4}}, segment / 4, Color(1), s.at(i));
     if (f.scattered) {
       // Transmittance cancels against the density: the albedo remains.
       ASSERT_NEAR(f.weight.r, 0.6f, 1e-6f);
@@ -77,10 +77,30 @@ TEST(HomogeneousMedium, FreeFlightDistancesFollowTheExponential) {
   EXPECT_GT(chi2.p_value, kAlpha) << chi2.report;
 }
 
+void check_chromatic_free_flight(Color beta);
+
 TEST(HomogeneousMedium, ChromaticFreeFlightIsUnbiasedPerChannel) {
-  // Channels draw the distance in turn; each channel's weighted estimates
-  // of passing the segment and of scattering in its first half must still
+  // Channels draw the distance in turn (equally for a grey path, mostly
+  // the first for a reddish one); each channel's weighted estimates of
+  // passing the segment and of scattering in its first half must still
   // have the closed-form means exp(-sigma T) and albedo (1 - exp(-sigma T/2)).
+  for (const Color beta : {Color(1), Color(1, 0.2f, 0.05f)}) check_chromatic_free_flight(beta);
+}
+
+TEST(HomogeneousMedium, ChromaticEventsNeverRaiseTheSumOfThePathsChannels) {
+  // With channels sharing the sampling in proportion to the path's weight,
+  // sum_c beta_c w_c <= sum_c beta_c at every event (sigma_s <= sigma_t).
+  const auto m = homogeneous("0.5, 3, 40", "1, 0.9, 1");
+  Samples s;
+  const Color beta(0.02f, 1, 0.5f);
+  for (int i = 0; i < 10000; ++i) {
+    const FreeFlight f = m->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, 2, beta, s.at(i));
+    const Color after = beta * f.weight;
+    ASSERT_LE(after.r + after.g + after.b, (beta.r + beta.g + beta.b) * (1 + 1e-5f)) << i;
+  }
+}
+
+void check_chromatic_free_flight(Color beta) {
   const Color sigma(0.5f, 1, 4), albedo(0.9f, 0.5f, 0.2f);
   const auto m = homogeneous("0.5, 1, 4", "0.9, 0.5, 0.2");
   ASSERT_TRUE(m->is_chromatic());
@@ -89,7 +109,7 @@ TEST(HomogeneousMedium, ChromaticFreeFlightIsUnbiasedPerChannel) {
   double pass[3][2] = {}, half[3][2] = {};
   Samples s;
   for (int i = 0; i < n; ++i) {
-    const FreeFlight f = m->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, float(T), s.at(i));
+    const FreeFlight f = m->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, float(T), beta, s.at(i));
     for (int c = 0; c < 3; ++c) {
       const double p = f.scattered ? 0 : f.weight[c], h = f.scattered && f.t < T / 2 ? f.weight[c] : 0;
       pass[c][0] += p;
@@ -103,7 +123,8 @@ TEST(HomogeneousMedium, ChromaticFreeFlightIsUnbiasedPerChannel) {
     const auto check = [&](const double(&sums)[2], double expected, const char* what) {
       const double mean = sums[0] / n, var = sums[1] / n - mean * mean;
       EXPECT_LT(std::abs(mean - expected), z * std::sqrt(var / n))
-          << what << " channel " << c << ": " << mean << " expected " << expected;
+          << what << " channel " << c << ": " << mean << " expected " << expected << " (path weight " << beta.r << ", "
+          << beta.g << ", " << beta.b << ")";
     };
     check(pass[c], std::exp(-sigma[c] * T), "passing");
     check(half[c], albedo[c] * (1 - std::exp(-sigma[c] * T / 2)), "scattering in the first half");
@@ -114,13 +135,13 @@ TEST(HomogeneousMedium, ExtremeExtinctionsStayFinite) {
   Samples s;
   const auto clear = homogeneous("0", "0.5");
   for (int i = 0; i < 100; ++i) {
-    const FreeFlight f = clear->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, kInfinity, s.at(i));
+    const FreeFlight f = clear->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, kInfinity, Color(1), s.at(i));
     EXPECT_FALSE(f.scattered);
     EXPECT_EQ(f.weight, Color(1));
   }
   const auto dense = homogeneous("1e6, 1e6, 1e5", "0.5");
   for (int i = 0; i < 100; ++i) {
-    const FreeFlight f = dense->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, 1, s.at(i));
+    const FreeFlight f = dense->sample_free_flight({{0, 0, 0}, {1, 0, 0}}, 1, Color(1), s.at(i));
     EXPECT_TRUE(f.scattered);
     EXPECT_TRUE(f.weight.is_finite());
     EXPECT_LT(f.t, 1e-3f);
