@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 
 namespace caustica {
 
+class Medium;
 class Shape;
 
 // Incident light sampled toward a reference point.
@@ -61,6 +63,14 @@ class Emitter : public Plugin {
   // An environment a ray leaving the scene can meet: infinitely far and
   // not a delta in direction (a directional light is met by no ray).
   bool is_environment() const { return is_infinite() && !is_delta(); }
+
+  // The medium light paths start in (null: vacuum): a nested <medium>, or
+  // for an area emitter on a shape that bounds media the shape's exterior.
+  const Medium* medium() const { return medium_.get(); }
+  void set_medium(std::shared_ptr<const Medium> medium) { medium_ = std::move(medium); }
+
+ private:
+  std::shared_ptr<const Medium> medium_;
 };
 
 }  // namespace caustica

@@ -145,6 +145,7 @@ class Instantiator {
       if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
     if (node.tag == "emitter") {
+      std::static_pointer_cast<Emitter>(plugin)->set_medium(props.child<Medium>("medium"));
       emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
       emitter_places.push_back(node.where);
     }
@@ -201,6 +202,8 @@ class Instantiator {
         throw SceneError(node.where, e.what());
       }
       shape->set_emitter(emitter.get());
+      // It emits from the shape's outer side, into the exterior medium.
+      if (shape->bounds_media()) emitter->set_medium(props.get_object<Medium>("exterior"));
     }
   }
 

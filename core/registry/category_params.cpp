@@ -8,8 +8,10 @@ const std::vector<CategoryParams>& category_params() {
        {{"interior", ParamType::Medium, std::nullopt, "the medium inside the shape (it then bounds media)"},
         {"exterior", ParamType::Medium, std::nullopt, "the medium outside the shape (it then bounds media)"}},
        {}},
-      // As in Mitsuba, a sensor's medium is any nested <medium>, named or not.
+      // As in Mitsuba, a sensor's or an emitter's medium is any nested
+      // <medium>, named or not.
       {"sensor", {}, {"medium"}},
+      {"emitter", {}, {"medium"}},
   };
   return params;
 }

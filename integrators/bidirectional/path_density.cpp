@@ -64,6 +64,9 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
       return emission_density(cur, next);
     case PathVertex::Kind::Surface:
       break;
+    case PathVertex::Kind::Medium:
+      // Its density would need the free-flight densities of the media too.
+      throw std::logic_error("bdpt does not weigh vertices in media yet");
   }
   if (!prev) throw std::logic_error("a surface vertex cannot start a subpath");
   return solid_angle_to_area(cur, next, cur.bsdf->pdf(direction_to(cur, *prev), direction_to(cur, next)));

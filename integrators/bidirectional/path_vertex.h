@@ -9,12 +9,14 @@
 namespace caustica {
 
 class Emitter;
+class Medium;
 
 // A vertex of a camera or light subpath, as the bidirectional estimators
 // keep them. Densities are per unit area, except at an environment vertex
 // (a direction, not a point), where they are per unit solid angle.
+// A scattering event in a medium (Kind::Medium) has a position only.
 struct PathVertex {
-  enum class Kind : uint8_t { Camera, Light, Surface };
+  enum class Kind : uint8_t { Camera, Light, Surface, Medium };
   Kind kind = Kind::Surface;
   // Position and frames. The camera and point lights have no normal (ng is
   // zero); an environment vertex has no position at all.
@@ -30,10 +32,15 @@ struct PathVertex {
   float pdf_fwd = 0;         // density of this vertex as its own subpath sampled it
   float pdf_rev = 0;         // density of this vertex as the other subpath would sample it
   std::optional<SurfaceBsdf> bsdf;
+  // The medium the subpath reached this vertex through (for a medium
+  // vertex, the one it lies in; for the camera and a light, the one they
+  // sit in); null for vacuum.
+  const Medium* medium = nullptr;
 
   Vec3 p() const { return si.p; }
   bool has_normal() const { return si.ng != Vec3(); }
   bool is_surface() const { return kind == Kind::Surface; }
+  bool in_medium() const { return kind == Kind::Medium; }
 };
 
 // Unit direction from vertex a toward vertex b.

@@ -8,7 +8,10 @@
 //
 // max_depth counts a path's segments from the camera, as for path; rr_depth
 // counts the light path's vertices after the emitter before Russian roulette
-// may end it.
+// may end it. Through media the light path scatters in them too, and every
+// scattering event is joined to the camera like a surface, its phase
+// function in place of a BSDF and the transmittance to the lens in place
+// of visibility.
 //
 //   <integrator type="ptracer"><integer name="max_depth" value="8"/></integrator>
 
@@ -39,9 +42,12 @@ class ParticleTracer final : public LightPathIntegrator {
     return 1;
   }
 
+  bool renders_media() const override { return true; }
+
   std::string plan(const Scene& scene) const override {
     return std::string("ptracer: light paths joined to the camera") +
-           (scene.features().lobes & kDelta ? "; surfaces seen through delta lobes stay black" : "");
+           (scene.features().lobes & kDelta ? "; surfaces seen through delta lobes stay black" : "") +
+           (scene.features().media ? "; media: scattering events joined to the camera through the media between" : "");
   }
 
  private:

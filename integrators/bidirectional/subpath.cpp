@@ -22,6 +22,21 @@ class SubpathRecorder {
     v.emitter = w.si.shape->emitter();
     v.beta = w.beta;
     v.bsdf.emplace(w.bsdf);
+    v.medium = w.medium;
+    return WalkAction::Continue;
+  }
+
+  WalkAction at_medium_vertex(const MediumVertex& m) {
+    PathVertex& v = path_.emplace_back();
+    v.kind = PathVertex::Kind::Medium;
+    v.si.p = m.p;
+    v.beta = m.beta;
+    v.medium = &m.medium;
+    return WalkAction::Continue;
+  }
+
+  WalkAction scattered_in_medium(const PhaseSample&) {
+    path_.back().delta = false;
     return WalkAction::Continue;
   }
 
@@ -55,11 +70,13 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
   camera.kind = PathVertex::Kind::Camera;
   camera.si.p = ray.o;
   camera.beta = Color(1);
+  camera.medium = scene.sensor().medium();
   // Every camera's importance and the densities it samples rays with cancel
   // (pinhole, thin lens, orthographic): every camera ray carries weight one,
   // the filter's weight being the film's business.
   SubpathRecorder recorder(scene, TransportMode::Radiance, path);
-  random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, recorder);
+  random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, recorder,
+              camera.medium);
 }
 
 void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
@@ -72,6 +89,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   light.kind = PathVertex::Kind::Light;
   light.emitter = start->emitter;
   light.delta_light = start->emitter->is_delta();
+  light.medium = start->emitter->medium();
   if (start->emitter->is_infinite()) {
     light.environment = true;
     light.w_env = -start->le.ray.d;
@@ -85,7 +103,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   }
   SubpathRecorder recorder(scene, TransportMode::Importance, path);
   random_walk(scene, start->le.ray, start->beta, TransportMode::Importance, light_walk_limits(settings), sampler,
-              recorder);
+              recorder, light.medium);
 }
 
 void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {
