@@ -51,7 +51,13 @@ class PathRadiance {
     return WalkAction::Continue;
   }
 
-  WalkAction scattered_in_medium(const PhaseSample&) requires kMedia { return WalkAction::Continue; }
+  // Caustic photons stop where they scatter in a medium, so what this path
+  // finds past a scattering event is its own to count.
+  WalkAction scattered_in_medium(const PhaseSample&) requires kMedia {
+    gathered_ = false;
+    delta_bounces_since_ = 0;
+    return WalkAction::Continue;
+  }
 
   WalkAction scattered(const BsdfSample& bs) {
     if (caustics_ && !bs.is_delta()) {

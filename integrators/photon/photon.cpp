@@ -97,12 +97,18 @@ class PhotonIntegrator final : public PixelIntegrator {
     return std::make_unique<CausticRounds>(*this, scene, seed);
   }
 
+  bool renders_media() const override { return true; }
+
   std::string plan(const Scene& scene) const override {
+    const std::string media = scene.features().media
+                                  ? "; media: photons are kept on surfaces only, and paths scattered in a medium are "
+                                    "path-traced"
+                                  : "";
     if (!scene.features().caustic_paths)
       return std::string("photon: caustic photon pass skipped (") + scene.features().caustics_reason +
-             "); path tracing alone, at path's cost";
+             "); path tracing alone, at path's cost" + media;
     return std::string("photon: ") + std::to_string(photon_.photons) + " caustic photons per round (" +
-           scene.features().caustics_reason + "), path tracing for the rest";
+           scene.features().caustics_reason + "), path tracing for the rest" + media;
   }
 
   std::string distributed_note() const override {

@@ -29,6 +29,12 @@ class PhotonRecorder {
   WalkAction scattered(const BsdfSample& bs) {
     return kind_ == PhotonPaths::Caustic && !bs.is_delta() ? WalkAction::Stop : WalkAction::Continue;
   }
+  // Photons are kept on surfaces only; one that scatters in a medium goes
+  // on (past it, it is no caustic either).
+  WalkAction at_medium_vertex(const MediumVertex&) {
+    return kind_ == PhotonPaths::Caustic ? WalkAction::Stop : WalkAction::Continue;
+  }
+  WalkAction scattered_in_medium(const PhaseSample&) { return WalkAction::Continue; }
 
  private:
   PhotonPaths kind_;
@@ -42,7 +48,7 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const 
   PhotonRecorder recorder(kind, out);
   // A photon needs at least one more segment, to the camera: light walks stop one short of max_depth.
   random_walk(scene, start->le.ray, start->beta, TransportMode::Importance, light_walk_limits(settings), sampler,
-              recorder);
+              recorder, start->emitter->medium());
 }
 
 }  // namespace

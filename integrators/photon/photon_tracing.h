@@ -14,11 +14,13 @@ class Scene;
 // Which photons a photon pass keeps.
 enum class PhotonPaths {
   // Caustics, L S+ D: kept where they land on a surface with a non-delta
-  // lobe after one or more delta bounces and nothing else; the photon stops
-  // at its first non-delta bounce.
+  // lobe after one or more delta bounces and nothing else (they may cross
+  // media without scattering); the photon stops at its first non-delta
+  // bounce or scattering event in a medium.
   Caustic,
   // All indirect light, L (S|D)+ D: kept at every surface with a non-delta
-  // lobe after the first bounce (direct light is left to shadow rays).
+  // lobe after the first bounce (direct light is left to shadow rays);
+  // photons scatter in media but are kept on surfaces only.
   Indirect,
 };
 
