@@ -75,7 +75,7 @@ TEST(MediaLoading, BadMediaAreErrors) {
               HasSubstr("bad.xml:3: shape 'sphere' takes a nested <medium> only as a parameter: name it "
                         "(name=\"...\"): interior, exterior"));
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<medium type='fog' id='m'/></scene>", "bad.xml"),
-              HasSubstr("bad.xml:2: unknown medium type 'fog' (available: homogeneous)"));
+              HasSubstr("bad.xml:2: unknown medium type 'fog' (available: heterogeneous, homogeneous)"));
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<shape type='sphere'>\n<ref name='interior' id='none'/>"
                                "</shape></scene>",
                                "bad.xml"),
