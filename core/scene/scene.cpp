@@ -1,5 +1,7 @@
 #include "core/scene/scene.h"
 
+#include "core/bsdf/bsdf.h"
+
 namespace caustica {
 
 Scene::Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared_ptr<Emitter>> emitters,
@@ -21,6 +23,21 @@ uint64_t Scene::rays_traced() const {
   uint64_t total = 0;
   for (uint64_t n : rays_traced_) total += n;
   return total;
+}
+
+std::optional<SurfaceInteraction> Scene::intersect_for_layers(const Ray& ray) const {
+  Ray r = ray;
+  float t_before = 0;
+  for (;;) {
+    ++layer_rays_traced_.local();
+    auto si = accel_->intersect(r);
+    if (!si || si->shape->lobes() != kNull) {
+      if (si) si->t += t_before;
+      return si;
+    }
+    t_before += si->t;
+    r = si->spawn(r.d);
+  }
 }
 
 uint64_t Scene::layer_rays_traced() const {

@@ -31,13 +31,12 @@ class Scene {
     if (ray_log_) ray_log_->record(ray, false);
     return accel_->intersect(ray);
   }
-  // The same query for the first-hit layers, which re-trace a camera ray
-  // the integrator traces too: counted apart, so that the rays reported for
-  // a render are the integrator's, each once.
-  std::optional<SurfaceInteraction> intersect_for_layers(const Ray& ray) const {
-    ++layer_rays_traced_.local();
-    return accel_->intersect(ray);
-  }
+  // The first surface a camera ray shows, for the first-hit layers, which
+  // re-trace a camera ray the integrator traces too: counted apart, so that
+  // the rays reported for a render are the integrator's, each once. Null
+  // surfaces (the boundaries of media) show nothing and are looked through;
+  // t stays the distance along `ray`.
+  std::optional<SurfaceInteraction> intersect_for_layers(const Ray& ray) const;
   bool occluded(const Ray& ray) const {
     ++rays_traced_.local();
     if (ray_log_) ray_log_->record(ray, true);

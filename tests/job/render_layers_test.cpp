@@ -20,13 +20,13 @@ struct Rendered {
   std::optional<FirstHitLayers> first_hit;
 };
 
-std::unique_ptr<Rendered> render_box(int res, uint32_t spp) {
+std::unique_ptr<Rendered> render_box(int res, uint32_t spp, const std::string& name = "cornell-box") {
   RenderSettings settings;
   settings.spp = spp;
   settings.seed = 5;
   auto r = std::make_unique<Rendered>(Rendered{
       RenderJob(
-          load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", std::to_string(res)}}),
+          load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", std::to_string(res)}}),
           settings),
       {FilmBuffer(1, 1, {}), {}},
       std::nullopt});
@@ -49,6 +49,22 @@ TEST(RenderLayers, BandsOfAnySizeMakeTheWholeImage) {
   const int albedo = whole.channel_index("albedo.R");
   ASSERT_GE(albedo, 0);
   EXPECT_GT(whole.pixels[4 * row + 4 * whole.channels.size() + size_t(albedo)], 0.1f);
+}
+
+// A medium's null boundary shows nothing: the layers of the fog box are
+// those of the plain box, the walls behind the boundary.
+TEST(RenderLayers, NullSurfacesAreLookedThrough) {
+  const auto fog = render_box(8, 1, "cornell-box-fog"), plain = render_box(8, 1);
+  ASSERT_TRUE(fog->first_hit && plain->first_hit);
+  const Image a = RenderLayers(fog->result.film, &*fog->first_hit, true, true).image();
+  const Image b = RenderLayers(plain->result.film, &*plain->first_hit, true, true).image();
+  for (const char* channel : {"albedo.R", "depth.T", "normal.Z"}) {
+    const int ia = a.channel_index(channel), ib = b.channel_index(channel);
+    ASSERT_GE(ia, 0);
+    for (int p = 0; p < 64; ++p)
+      EXPECT_NEAR(a.pixels[p * a.channels.size() + ia], b.pixels[p * b.channels.size() + ib], 1e-3f)
+          << channel << " at pixel " << p;
+  }
 }
 
 // The first-hit layers are evaluated only to be written: a scan for values
