@@ -1,7 +1,5 @@
 #include "core/scene/scene.h"
 
-#include "core/bsdf/bsdf.h"
-
 namespace caustica {
 
 Scene::Scene(std::vector<std::shared_ptr<Shape>> shapes, std::vector<std::shared_ptr<Emitter>> emitters,
@@ -31,7 +29,7 @@ std::optional<SurfaceInteraction> Scene::intersect_for_layers(const Ray& ray) co
   for (;;) {
     ++layer_rays_traced_.local();
     auto si = accel_->intersect(r);
-    if (!si || si->shape->lobes() != kNull) {
+    if (!si || !si->shape->is_null()) {
       if (si) si->t += t_before;
       return si;
     }

@@ -30,7 +30,7 @@ bool unblocked(const Scene& scene, Ray ray) {
   for (;;) {
     const auto si = scene.intersect(ray);
     if (!si) return true;
-    if (si->shape->lobes() != kNull) return false;
+    if (!si->shape->is_null()) return false;
     const Ray next = si->spawn(ray.d);
     ray = infinite ? next : Ray{next.o, end - next.o, 1};
   }

@@ -20,6 +20,8 @@ float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
 
 uint32_t Shape::lobes() const { return bsdf_->lobes(); }
 
+bool Shape::is_null() const { return lobes() == kNull; }
+
 PositionSample Shape::sample_seen_from(Vec3 ref, Vec2 u) const {
   PositionSample ps = sample_position(u);
   ps.pdf = area_to_solid_angle(ps.pdf, ref, ps.p, ps.n);

@@ -54,6 +54,9 @@ class Shape : public Plugin {
   virtual bool is_instance() const { return false; }
   // The BsdfLobe flags of what the shape reflects (an instance's are its group's).
   virtual uint32_t lobes() const;
+  // A null surface, which scatters nothing (a medium's index-matched
+  // boundary): paths and the first-hit layers look through it.
+  bool is_null() const;
 
   const std::shared_ptr<Bsdf>& bsdf() const { return bsdf_; }
   const Emitter* emitter() const { return emitter_; }

@@ -16,7 +16,4 @@ inline const Medium* medium_after(const SurfaceInteraction& si, const Medium* cu
   return dot(d, si.ng) > 0 ? shape.exterior() : shape.interior();
 }
 
-// Whether the walk steps through `si` without a vertex: an index-matched boundary.
-bool is_null_surface(const SurfaceInteraction& si);
-
 }  // namespace caustica

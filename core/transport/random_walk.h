@@ -110,7 +110,7 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
             break;
           }
         }
-        if (!si || !is_null_surface(*si)) break;
+        if (!si || !si->shape->is_null()) break;
         medium = medium_after(*si, medium, ray.d);
         ray = si->spawn(ray.d);
         si = scene.intersect(ray);

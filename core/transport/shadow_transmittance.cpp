@@ -2,14 +2,11 @@
 
 #include <cmath>
 
-#include "core/bsdf/bsdf.h"
 #include "core/media/medium.h"
 #include "core/scene/scene.h"
 #include "core/transport/medium_crossing.h"
 
 namespace caustica {
-
-bool is_null_surface(const SurfaceInteraction& si) { return si.shape->lobes() == kNull; }
 
 Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sampler& sampler) {
   // Where the segment ends, so that it can be resumed past each null surface.
@@ -18,7 +15,7 @@ Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sa
   Color tr(1);
   for (;;) {
     const auto si = scene.intersect(ray);
-    if (si && !is_null_surface(*si)) return {};
+    if (si && !si->shape->is_null()) return {};
     if (medium) {
       tr *= medium->transmittance(ray, si ? si->t : ray.t_max, sampler);
       if (tr.is_black()) return {};
