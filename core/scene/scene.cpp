@@ -23,11 +23,11 @@ uint64_t Scene::rays_traced() const {
   return total;
 }
 
-std::optional<SurfaceInteraction> Scene::intersect_for_layers(const Ray& ray) const {
+std::optional<SurfaceInteraction> Scene::first_shown(const Ray& ray, RayCounter& counter) const {
   Ray r = ray;
   float t_before = 0;
   for (;;) {
-    ++layer_rays_traced_.local();
+    ++counter.local();
     auto si = accel_->intersect(r);
     if (!si || !si->shape->is_null()) {
       if (si) si->t += t_before;

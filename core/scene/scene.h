@@ -31,12 +31,16 @@ class Scene {
     if (ray_log_) ray_log_->record(ray, false);
     return accel_->intersect(ray);
   }
-  // The first surface a camera ray shows, for the first-hit layers, which
-  // re-trace a camera ray the integrator traces too: counted apart, so that
-  // the rays reported for a render are the integrator's, each once. Null
-  // surfaces (the boundaries of media) show nothing and are looked through;
+  // The first surface `ray` shows: null surfaces (the boundaries of media)
+  // show nothing and are looked through, and media are not shown either;
   // t stays the distance along `ray`.
-  std::optional<SurfaceInteraction> intersect_for_layers(const Ray& ray) const;
+  std::optional<SurfaceInteraction> intersect_shown(const Ray& ray) const { return first_shown(ray, rays_traced_); }
+  // The same query for the first-hit layers, which re-trace a camera ray
+  // the integrator traces too: counted apart, so that the rays reported for
+  // a render are the integrator's, each once.
+  std::optional<SurfaceInteraction> intersect_for_layers(const Ray& ray) const {
+    return first_shown(ray, layer_rays_traced_);
+  }
   bool occluded(const Ray& ray) const {
     ++rays_traced_.local();
     if (ray_log_) ray_log_->record(ray, true);
@@ -91,6 +95,7 @@ class Scene {
   using RayCounter =
       tbb::enumerable_thread_specific<uint64_t, tbb::cache_aligned_allocator<uint64_t>, tbb::ets_key_per_instance>;
   mutable RayCounter rays_traced_{0}, layer_rays_traced_{0};
+  std::optional<SurfaceInteraction> first_shown(const Ray& ray, RayCounter& counter) const;
   RayLog* ray_log_ = nullptr;
 };
 

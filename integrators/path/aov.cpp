@@ -9,7 +9,8 @@
 //   position    hit point, world space: name.X, name.Y, name.Z
 //   uv          surface coordinates: name.U, name.V
 //   depth       distance from the camera along the ray: name.T
-// Rays that miss write zeros.
+// Rays that miss write zeros. Media and their null boundaries are looked
+// through: the values are those of the first surface that scatters light.
 //
 //   <integrator type="aov"><string name="aovs" value="a:albedo,n:sh_normal"/></integrator>
 
@@ -35,7 +36,7 @@ class AovEstimator final : public PixelEstimator {
  public:
   AovEstimator(const AovEvaluator& evaluator, const Scene& scene) : evaluator_(evaluator), scene_(scene) {}
   void sample(const Ray& ray, Sampler&, std::span<float> out) const override {
-    evaluator_.evaluate(ray, scene_.intersect(ray), out);
+    evaluator_.evaluate(ray, scene_.intersect_shown(ray), out);
   }
 
  private:
@@ -48,6 +49,7 @@ class AovIntegrator final : public PixelIntegrator {
   explicit AovIntegrator(const Properties& props) : evaluator_(read_aovs(props)) {}
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
+  bool renders_media() const override { return true; }
 
   std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t) const override {
     return std::make_unique<AovEstimator>(evaluator_, scene);

@@ -190,7 +190,7 @@ TEST(MediumRadiance, IntegratorsWithoutMediaRefuseTheScene) {
     FAIL() << "bdpt rendered a scene with media";
   } catch (const std::invalid_argument& e) {
     EXPECT_THAT(e.what(), HasSubstr("integrator 'bdpt' does not render participating media or null surfaces yet, "
-                                    "which fog.xml has; render it with path, photon, ptracer, volpath"));
+                                    "which fog.xml has; render it with aov, path, photon, ptracer, volpath"));
   }
 }
 
