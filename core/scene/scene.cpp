@@ -35,6 +35,7 @@ std::optional<SurfaceInteraction> Scene::first_shown(const Ray& ray, RayCounter&
     }
     t_before += si->t;
     r = si->spawn(r.d);
+    r.t_max = ray.t_max - t_before;
   }
 }
 

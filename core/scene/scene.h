@@ -31,9 +31,9 @@ class Scene {
     if (ray_log_) ray_log_->record(ray, false);
     return accel_->intersect(ray);
   }
-  // The first surface `ray` shows: null surfaces (the boundaries of media)
-  // show nothing and are looked through, and media are not shown either;
-  // t stays the distance along `ray`.
+  // The first surface `ray` shows before ray.t_max: null surfaces (the
+  // boundaries of media) show nothing and are looked through, and media are
+  // not shown either; t stays the ray parameter along `ray`.
   std::optional<SurfaceInteraction> intersect_shown(const Ray& ray) const { return first_shown(ray, rays_traced_); }
   // The same query for the first-hit layers, which re-trace a camera ray
   // the integrator traces too: counted apart, so that the rays reported for

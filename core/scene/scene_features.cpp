@@ -22,22 +22,10 @@ Vec2 r2_point(int i) {
   return {float(x - std::floor(x)), float(y - std::floor(y))};
 }
 
-// Whether a shadow ray reaches its end, stepping through null surfaces
-// (which may bound media: light is dimmed there, not stopped).
-bool unblocked(const Scene& scene, Ray ray) {
-  const bool infinite = std::isinf(ray.t_max);
-  const Vec3 end = infinite ? Vec3() : ray.at(ray.t_max);
-  for (;;) {
-    const auto si = scene.intersect(ray);
-    if (!si) return true;
-    if (!si->shape->is_null()) return false;
-    const Ray next = si->spawn(ray.d);
-    ray = infinite ? next : Ray{next.o, end - next.o, 1};
-  }
-}
-
-// Whether any light shines directly on some point of `shape`.
-bool lit_directly(const Scene& scene, const Shape& shape, bool through_null) {
+// Whether any light shines directly on some point of `shape`; null
+// surfaces (which may bound media: light is dimmed there, not stopped) are
+// looked through.
+bool lit_directly(const Scene& scene, const Shape& shape) {
   for (int i = 0; i < kProbePoints; ++i) {
     const PositionSample ps = shape.sample_position(r2_point(i));
     if (!(ps.pdf > 0)) continue;
@@ -49,7 +37,7 @@ bool lit_directly(const Scene& scene, const Shape& shape, bool through_null) {
       const auto ls = emitter->sample_Li({ps.p, ps.p_error, ps.n}, r2_point(i + kProbePoints));
       if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) continue;
       const Ray shadow = ls->is_infinite ? si.spawn(ls->wi) : si.spawn_to(ls->p, ls->p_error, ls->n);
-      if (through_null ? unblocked(scene, shadow) : !scene.occluded(shadow)) return true;
+      if (!scene.intersect_shown(shadow)) return true;
     }
   }
   return false;
@@ -111,7 +99,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   for (const auto& s : scene.shapes()) {
     if (!(s->lobes() & kDelta)) continue;
     ++specular_shapes;
-    if (!lit_specular && lit_directly(scene, *s, f.lobes & kNull)) lit_specular = s.get();
+    if (!lit_specular && lit_directly(scene, *s)) lit_specular = s.get();
   }
   if (specular_shapes == 0) {
     f.caustics_reason = "no surface has a delta lobe (mirror or smooth glass)";
