@@ -23,8 +23,20 @@ Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sa
     if (!si) return tr;
     medium = medium_after(*si, medium, ray.d);
     const Ray next = si->spawn(ray.d);
-    ray = infinite ? next : Ray{next.o, end - next.o, 1};
+    if (infinite) {
+      ray = next;
+      continue;
+    }
+    // A null surface within its rounding margin of the end leaves nothing
+    // to cross: turning toward the end would hit it again from the far side.
+    if (!(dot(end - next.o, ray.d) > 0)) return tr;
+    ray = {next.o, end - next.o, 1};
   }
+}
+
+Color shadow_visibility(const Scene& scene, const Ray& ray, const Medium* medium, Sampler& sampler) {
+  if (scene.features().medium_walk) return shadow_transmittance(scene, ray, medium, sampler);
+  return Color(scene.occluded(ray) ? 0.0f : 1.0f);
 }
 
 }  // namespace caustica

@@ -15,4 +15,8 @@ class Scene;
 // into, and every medium crossed multiplies its transmittance in.
 Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sampler& sampler);
 
+// The same fraction for a scene of any kind: where the scene's walks never
+// meet a medium, one occlusion query decides between 0 and 1.
+Color shadow_visibility(const Scene& scene, const Ray& ray, const Medium* medium, Sampler& sampler);
+
 }  // namespace caustica

@@ -6,7 +6,10 @@
 // joins a light vertex to the lens and splats where it lands. Every path is
 // weighed by multiple importance sampling against all the strategies that
 // could have made it, so the estimate stays unbiased while each kind of
-// light goes to the strategy that finds it best.
+// light goes to the strategy that finds it best. Both subpaths scatter in
+// participating media as well as at surfaces; a connection to or from a
+// point in a medium uses its phase function in place of a BSDF and carries
+// the transmittance of the media between in place of visibility.
 //
 // max_depth counts the segments of the whole path; rr_depth counts the
 // vertices of each subpath before Russian roulette may end it. `mis` picks
@@ -23,10 +26,12 @@
 
 #include "core/registry/properties.h"
 #include "core/render/camera_sample.h"
+#include "core/render/direct_light.h"
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
 #include "core/transport/emission.h"
+#include "core/transport/shadow_transmittance.h"
 #include "integrators/bidirectional/camera_connection.h"
 #include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/strategy_weight.h"
@@ -103,10 +108,13 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     return cs.weight;
   }
 
+  bool renders_media() const override { return true; }
+
   std::string plan(const Scene& scene) const override {
     return std::string("bdpt: every (s, t) strategy, weighed by the ") +
            (heuristic_ == MisHeuristic::Power ? "power" : "balance") + " heuristic" +
-           (scene.features().caustic_paths ? "; caustics mostly by light tracing (t = 1)" : "");
+           (scene.features().caustic_paths ? "; caustics mostly by light tracing (t = 1)" : "") +
+           (scene.features().media ? "; media: both subpaths scatter in them, joined through their transmittance" : "");
   }
 
  private:
@@ -122,7 +130,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     PathVertex& cv = camera[t - 1];
     const std::span<const PathVertex> camera_part = std::span(camera).first(t);
     if (s == 0) return emitted(scene, camera, t);
-    if (cv.environment || !(cv.bsdf->lobes() & ~kDelta)) return {};
+    if (cv.environment || !joinable(cv)) return {};
     const Vec3 wo = direction_to(cv, camera[t - 2]);
     if (s == 1) {
       float u_select = sampler.next_1d();
@@ -131,10 +139,10 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       if (!choice) return {};
       const auto ls = choice->emitter->sample_Li({cv.p(), cv.si.p_error, cv.si.ng}, u);
       if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) return {};
-      const Color f = cv.bsdf->eval(wo, ls->wi) * abs_dot(ls->wi, cv.si.shading.n);
+      Color f = scattering(cv, wo, ls->wi);
       if (f.is_black()) return {};
-      const Ray shadow = ls->is_infinite ? cv.si.spawn(ls->wi) : cv.si.spawn_to(ls->p, ls->p_error, ls->n);
-      if (scene.occluded(shadow)) return {};
+      f *= shadow_visibility(scene, shadow_ray(cv.si, *ls), medium_toward(cv, ls->wi), sampler);
+      if (f.is_black()) return {};
       PathVertex lv;
       lv.kind = PathVertex::Kind::Light;
       lv.emitter = choice->emitter;
@@ -149,15 +157,15 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       return cv.beta * f * ls->Li * (w / (choice->pmf * ls->pdf));
     }
     const PathVertex& lv = light[s - 1];
-    if (!(lv.bsdf->lobes() & ~kDelta)) return {};
+    if (!joinable(lv)) return {};
     const Vec3 d = lv.p() - cv.p();
     const float dist2 = squared_length(d);
     if (dist2 == 0) return {};
     const Vec3 wi = d / std::sqrt(dist2);
-    const Color f = cv.bsdf->eval(wo, wi) * lv.bsdf->eval(direction_to(lv, light[s - 2]), -wi) *
-                    (abs_dot(wi, cv.si.shading.n) * abs_dot(wi, lv.si.shading.n) / dist2);
+    Color f = scattering(cv, wo, wi) * scattering(lv, direction_to(lv, light[s - 2]), -wi) * (1 / dist2);
     if (f.is_black()) return {};
-    if (scene.occluded(cv.si.spawn_to(lv.p(), lv.si.p_error, lv.si.ng))) return {};
+    f *= shadow_visibility(scene, cv.si.spawn_to(lv.p(), lv.si.p_error, lv.si.ng), medium_toward(cv, wi), sampler);
+    if (f.is_black()) return {};
     return cv.beta * f * lv.beta * strategy_weight(scene, light.first(s), camera_part, s, t, heuristic_);
   }
 

@@ -1,8 +1,6 @@
 #include "integrators/bidirectional/camera_connection.h"
 
-#include "core/media/medium.h"
 #include "core/scene/scene.h"
-#include "core/transport/medium_crossing.h"
 #include "core/transport/shadow_transmittance.h"
 
 namespace caustica {
@@ -17,22 +15,14 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   Color f;
   if (v.kind == PathVertex::Kind::Light) {
     f = v.emitter->L(v.si, ws->wi) * abs_dot(v.si.ng, ws->wi);
-  } else if (v.in_medium()) {
-    f = Color(v.medium->phase().eval(direction_to(v, light[s - 2]), ws->wi));
   } else {
-    if (!(v.bsdf->lobes() & ~kDelta)) return std::nullopt;
-    f = v.bsdf->eval(direction_to(v, light[s - 2]), ws->wi) * abs_dot(ws->wi, v.si.shading.n);
+    if (!joinable(v)) return std::nullopt;
+    f = scattering(v, direction_to(v, light[s - 2]), ws->wi);
   }
   if (f.is_black()) return std::nullopt;
-  const Ray to_lens = v.si.spawn_to(ws->p_lens, {}, {});
-  if (scene.features().medium_walk) {
-    // A surface hands the ray to the medium on the camera's side of it.
-    const Medium* medium = v.is_surface() ? medium_after(v.si, v.medium, ws->wi) : v.medium;
-    f *= shadow_transmittance(scene, to_lens, medium, sampler);
-    if (f.is_black()) return std::nullopt;
-  } else if (scene.occluded(to_lens)) {
-    return std::nullopt;
-  }
+  // A surface hands the ray to the medium on the camera's side of it.
+  f *= shadow_visibility(scene, v.si.spawn_to(ws->p_lens, {}, {}), medium_toward(v, ws->wi), sampler);
+  if (f.is_black()) return std::nullopt;
   CameraConnection c{ws->raster, v.beta * f * ws->We / ws->pdf, {}};
   c.camera.kind = PathVertex::Kind::Camera;
   c.camera.si.p = ws->p_lens;

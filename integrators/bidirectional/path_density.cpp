@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/media/medium.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -63,13 +64,13 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
     case PathVertex::Kind::Light:
       return emission_density(cur, next);
     case PathVertex::Kind::Surface:
-      break;
     case PathVertex::Kind::Medium:
-      // Its density would need the free-flight densities of the media too.
-      throw std::logic_error("bdpt does not weigh vertices in media yet");
+      break;
   }
-  if (!prev) throw std::logic_error("a surface vertex cannot start a subpath");
-  return solid_angle_to_area(cur, next, cur.bsdf->pdf(direction_to(cur, *prev), direction_to(cur, next)));
+  if (!prev) throw std::logic_error("a scattering vertex cannot start a subpath");
+  const Vec3 w_prev = direction_to(cur, *prev), w_next = direction_to(cur, next);
+  return solid_angle_to_area(
+      cur, next, cur.in_medium() ? cur.medium->phase().eval(w_prev, w_next) : cur.bsdf->pdf(w_prev, w_next));
 }
 
 }  // namespace caustica

@@ -12,7 +12,10 @@ class Scene;
 
 // Density of sampling `next` from `cur`, where `cur` was reached from
 // `prev` (null when `cur` starts its subpath): the camera's directional
-// density, an emitter's emission density, or the BSDF's.
+// density, an emitter's emission density, the BSDF's, or in a medium the
+// phase function's. The media's free-flight densities are left out of
+// every density alike: the weights stay a function of the path alone, so
+// they still sum to one over the strategies.
 float scatter_density(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next);
 
 // Density of a light subpath starting at the light vertex `v` (or the

@@ -43,6 +43,18 @@ struct PathVertex {
   bool in_medium() const { return kind == Kind::Medium; }
 };
 
+// Whether a connection can join `v`: a point in a medium always can, a
+// surface when its BSDF has a lobe that is not delta.
+bool joinable(const PathVertex& v);
+
+// How much of what arrives at the scattering vertex `v` from w_next leaves
+// toward w_prev: the phase function in a medium, at a surface the BSDF
+// times |cos| at w_next (both directions unit, away from v).
+Color scattering(const PathVertex& v, Vec3 w_prev, Vec3 w_next);
+
+// The medium a ray leaving `v` along w travels through first.
+const Medium* medium_toward(const PathVertex& v, Vec3 w);
+
 // Unit direction from vertex a toward vertex b.
 inline Vec3 direction_to(const PathVertex& a, const PathVertex& b) {
   if (b.environment) return b.w_env;

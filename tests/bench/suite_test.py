@@ -90,11 +90,11 @@ class SceneWithMedia(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             result = subprocess.run(
                 ["/usr/bin/python3", str(ROOT / "bench" / "suite.py"), "--scale", "tiny", "--out", tmp, "--caustica",
-                 BINARY, "--threads", "2", "--integrators", "path,bdpt", "--samplers", "independent", "--scenes",
+                 BINARY, "--threads", "2", "--integrators", "path,direct", "--samplers", "independent", "--scenes",
                  "cornell-box-fog"],
                 capture_output=True, text=True)
             self.assertEqual(result.returncode, 0, result.stderr)
-            self.assertIn("skipping integrator 'bdpt' on cornell-box-fog", result.stdout)
+            self.assertIn("skipping integrator 'direct' on cornell-box-fog", result.stdout)
             with open(Path(tmp) / "convergence.csv") as f:
                 rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
             self.assertEqual({(r["scene"], r["integrator"]) for r in rows}, {("cornell-box-fog", "path")})

@@ -1,5 +1,6 @@
-// Hard cases of participating media, each rendered by path: every pixel
-// finite, no sample dropped, and light where light must arrive.
+// Hard cases of participating media, each rendered by path, ptracer and
+// bdpt: every pixel finite, no sample dropped, and light where light must
+// arrive.
 //  - extinction 1e6 (a medium no light crosses) filling a glass sphere, and 0;
 //  - media nested: a scattering medium inside glass inside another medium
 //    (bounded by a null sphere) the camera sits in;
@@ -15,16 +16,19 @@
 namespace caustica {
 namespace {
 
-std::string box_scene(const std::string& media, const std::string& sensor_medium, const std::string& shapes,
-                      const std::string& light) {
-  return "<scene version='3.0.0'><integrator type='path'/>" + media +
-         "<sensor type='perspective'><float name='fov' value='60'/>" + sensor_medium +
-         "<transform name='to_world'><lookat origin='0, 0, 3' target='0, 0, 0'/></transform>"
-         "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/></film></sensor>"
-         "<shape type='rectangle'><transform name='to_world'><scale value='5'/><translate z='-1.5'/></transform>"
-         "</shape>" +
-         shapes + light + "</scene>";
-}
+class MediumHardCases : public testing::TestWithParam<const char*> {
+ protected:
+  std::string box_scene(const std::string& media, const std::string& sensor_medium, const std::string& shapes,
+                        const std::string& light) const {
+    return "<scene version='3.0.0'><integrator type='" + std::string(GetParam()) + "'/>" + media +
+           "<sensor type='perspective'><float name='fov' value='60'/>" + sensor_medium +
+           "<transform name='to_world'><lookat origin='0, 0, 3' target='0, 0, 0'/></transform>"
+           "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/></film></sensor>"
+           "<shape type='rectangle'><transform name='to_world'><scale value='5'/><translate z='-1.5'/></transform>"
+           "</shape>" +
+           shapes + light + "</scene>";
+  }
+};
 
 const std::string kAreaLight =
     "<shape type='rectangle'><transform name='to_world'><rotate x='1' angle='90'/><translate y='1.8'/></transform>"
@@ -50,7 +54,7 @@ double finite_mean(const std::string& xml) {
   return sum / img.size();
 }
 
-TEST(MediumHardCases, ExtremeExtinctionsInsideGlass) {
+TEST_P(MediumHardCases, ExtremeExtinctionsInsideGlass) {
   for (const char* sigma : {"1e6", "0"}) {
     const double mean = finite_mean(
         box_scene(medium("m", sigma), "",
@@ -59,7 +63,7 @@ TEST(MediumHardCases, ExtremeExtinctionsInsideGlass) {
   }
 }
 
-TEST(MediumHardCases, NestedMediaAroundTheCamera) {
+TEST_P(MediumHardCases, NestedMediaAroundTheCamera) {
   const double mean =
       finite_mean(box_scene(medium("outer", "0.3") + medium("inner", "4"), "<ref id='outer'/>",
                             "<shape type='sphere'><float name='radius' value='1.2'/><ref name='interior' id='outer'/>"
@@ -69,15 +73,16 @@ TEST(MediumHardCases, NestedMediaAroundTheCamera) {
   EXPECT_GT(mean, 0);
 }
 
-TEST(MediumHardCases, APointLightInsideAMedium) {
+TEST_P(MediumHardCases, APointLightInsideAMedium) {
   // The camera looks into a fog ball lit only by a point at its centre.
-  const double mean = finite_mean(box_scene(
-      medium("fog", "2"), "", "<shape type='sphere'><ref name='interior' id='fog'/></shape>",
-      "<emitter type='point'><point name='position' x='0' y='0' z='0'/><rgb name='intensity' value='10'/></emitter>"));
+  const double mean = finite_mean(
+      box_scene(medium("fog", "2"), "", "<shape type='sphere'><ref name='interior' id='fog'/></shape>",
+                "<emitter type='point'><point name='position' x='0' y='0' z='0'/><rgb name='intensity' value='10'/>"
+                "<ref id='fog'/></emitter>"));
   EXPECT_GT(mean, 0);
 }
 
-TEST(MediumHardCases, TheCameraInsideABoundedMedium) {
+TEST_P(MediumHardCases, TheCameraInsideABoundedMedium) {
   // A null sphere around the camera, the sensor in its medium.
   const double mean = finite_mean(
       box_scene(medium("fog", "0.5"), "<ref id='fog'/>",
@@ -86,6 +91,9 @@ TEST(MediumHardCases, TheCameraInsideABoundedMedium) {
                 kAreaLight));
   EXPECT_GT(mean, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Integrators, MediumHardCases, testing::Values("path", "ptracer", "bdpt"),
+                         test::scene_test_name);
 
 }  // namespace
 }  // namespace caustica

@@ -184,13 +184,13 @@ TEST(MediumRadiance, ShadowRaysLeaveATransmittingBoundaryInTheMediumBeyondIt) {
 }
 
 TEST(MediumRadiance, IntegratorsWithoutMediaRefuseTheScene) {
-  const auto scene = test::scene_from_xml(sphere_scene("bdpt", medium("fog", "1", "1"), "fog", 0.5f), "fog.xml");
+  const auto scene = test::scene_from_xml(sphere_scene("direct", medium("fog", "1", "1"), "fog", 0.5f), "fog.xml");
   try {
     test::render_scene(scene, 1);
-    FAIL() << "bdpt rendered a scene with media";
+    FAIL() << "direct rendered a scene with media";
   } catch (const std::invalid_argument& e) {
-    EXPECT_THAT(e.what(), HasSubstr("integrator 'bdpt' does not render participating media or null surfaces yet, "
-                                    "which fog.xml has; render it with aov, path, photon, ptracer, volpath"));
+    EXPECT_THAT(e.what(), HasSubstr("integrator 'direct' does not render participating media or null surfaces yet, "
+                                    "which fog.xml has; render it with aov, bdpt, path, photon, ptracer, volpath"));
   }
 }
 

@@ -8,8 +8,10 @@
 // solved by iterating S on a fine grid of layers (the formal solution is
 // exact for S constant in a layer) with Gauss-Legendre directions. The
 // single-scattering answer (max_depth 2: the camera ray, one event, the
-// light) is the first iterate. Each check is a z-test of the image mean at
-// 0.1%, Sidak-corrected over the file's checks; seeds are fixed.
+// light) is the first iterate. path and bdpt render it (the orthographic
+// camera leaves bdpt its strategies that start from the camera). Each
+// check is a z-test of the image mean at 0.1%, Sidak-corrected over the
+// file's checks; seeds are fixed.
 
 #include <gtest/gtest.h>
 
@@ -22,7 +24,7 @@
 namespace caustica {
 namespace {
 
-constexpr int kChecks = 3;
+constexpr int kChecks = 2 * 3;
 const double kZCritical = test::two_sided_z_critical(1 - std::pow(1 - 0.001, 1.0 / kChecks));
 
 // Gauss-Legendre nodes and weights on [0, 1], by Newton's method on P_n.
@@ -91,10 +93,10 @@ double slab_transmission(double T, double albedo, int orders) {
   return I;
 }
 
-std::string slab_scene(double T, double albedo, int max_depth) {
+std::string slab_scene(const std::string& integrator, double T, double albedo, int max_depth) {
   // The slab spans z in [0.01, 1.01] and 400 units across; the emitter
   // below it is black to what falls on it.
-  return "<scene version='3.0.0'><integrator type='path'><integer name='max_depth' value='" +
+  return "<scene version='3.0.0'><integrator type='" + integrator + "'><integer name='max_depth' value='" +
          std::to_string(max_depth) +
          "'/></integrator>"
          "<medium type='homogeneous' id='slab'><float name='sigma_t' value='" +
@@ -111,9 +113,14 @@ std::string slab_scene(double T, double albedo, int max_depth) {
          "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>";
 }
 
-void expect_slab(double T, double albedo, int max_depth, int orders, uint64_t seed) {
+class MediumSlab : public testing::TestWithParam<const char*> {
+ protected:
+  void expect_slab(double T, double albedo, int max_depth, int orders, uint64_t seed) const;
+};
+
+void MediumSlab::expect_slab(double T, double albedo, int max_depth, int orders, uint64_t seed) const {
   const double expected = slab_transmission(T, albedo, orders);
-  const auto scene = test::scene_from_xml(slab_scene(T, albedo, max_depth));
+  const auto scene = test::scene_from_xml(slab_scene(GetParam(), T, albedo, max_depth));
   const FilmBuffer film = test::render_scene(scene, 256, seed);
   const auto img = film.resolve();
   const auto var = film.variance();
@@ -124,16 +131,18 @@ void expect_slab(double T, double albedo, int max_depth, int orders, uint64_t se
   }
   const double pixels = double(img.size() / 3), mean = sum / pixels, standard_error = std::sqrt(var_sum) / pixels;
   EXPECT_LT(std::abs(mean - expected), kZCritical * standard_error)
-      << "T " << T << ", albedo " << albedo << ", max_depth " << max_depth << ": " << mean << " +- " << standard_error
-      << ", expected " << expected;
+      << GetParam() << ", T " << T << ", albedo " << albedo << ", max_depth " << max_depth << ": " << mean << " +- "
+      << standard_error << ", expected " << expected;
 }
 
-TEST(MediumSlab, TransmissionMatchesTheOneDimensionalSolution) {
+TEST_P(MediumSlab, TransmissionMatchesTheOneDimensionalSolution) {
   expect_slab(1, 0.8, -1, 0, 1);
   expect_slab(2, 0.95, -1, 0, 2);
 }
 
-TEST(MediumSlab, SingleScatteringMatchesTheFirstOrder) { expect_slab(1, 0.8, 2, 1, 3); }
+TEST_P(MediumSlab, SingleScatteringMatchesTheFirstOrder) { expect_slab(1, 0.8, 2, 1, 3); }
+
+INSTANTIATE_TEST_SUITE_P(Integrators, MediumSlab, testing::Values("path", "bdpt"), test::scene_test_name);
 
 }  // namespace
 }  // namespace caustica
