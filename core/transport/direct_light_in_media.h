@@ -13,9 +13,12 @@ class Scene;
 // sample_direct_light (core/render/direct_light.h), the shadow ray's
 // visibility replaced by its transmittance.
 
-// At a surface point reached through `arrived_in` (the medium on wo's side).
+// At a surface point reached through `arrived_in` (the medium on wo's side),
+// n_bsdf BSDF samples being taken for each light sample (0: none follows,
+// and the light sample takes all the weight).
 Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
-                                   const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light);
+                                   const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light,
+                                   float n_bsdf = 1);
 
 // At a scattering event at p inside `medium`, weighed against sampling its
 // phase function.

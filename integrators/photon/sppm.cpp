@@ -10,7 +10,13 @@
 // D / n + tau / (n photons pi R^2) per pixel after n iterations, which
 // enters the film once the iterations are done; the filter only places the
 // camera rays. The camera walk through delta bounces has the walks'
-// Russian roulette.
+// Russian roulette. Through participating media the camera walk also
+// passes the scattering events it samples, adding direct light at each
+// (weighed against the phase function's sample that continues the walk),
+// and photons scatter in media but are kept on surfaces only: light
+// scattered in a medium reaches the image through the surface its
+// phase-sampled continuation finds, and each photon counts what it carries
+// to a surface after scattering anywhere.
 // Photon rounds and the camera pass run in parallel and are deterministic
 // for a seed.
 //
@@ -34,6 +40,7 @@
 #include "core/render/iterative_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
+#include "core/transport/direct_light_in_media.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 #include "integrators/photon/photon_density.h"
@@ -66,7 +73,11 @@ class VisiblePoint {
     if (v.last) return WalkAction::Stop;
     if (!(v.bsdf.lobes() & ~kDelta)) return WalkAction::Continue;
     const float u_select = sampler_.next_1d();
-    px_.direct += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, sampler_.next_2d(), 1, 0);
+    const Vec2 u_light = sampler_.next_2d();
+    px_.direct += v.beta * (scene_.features().medium_walk
+                                ? sample_direct_light_in_media(scene_, v.si, v.bsdf, v.wo, v.medium, sampler_, u_select,
+                                                               u_light, 0)
+                                : sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, 1, 0));
     const PhotonGather g = gather_photons(map_, px_.radius, v.si, v.bsdf, v.wo, v.segments, settings_.max_depth);
     flux = v.beta * g.flux;
     photons = double(g.count);
@@ -80,6 +91,18 @@ class VisiblePoint {
   }
 
   WalkAction scattered(const BsdfSample&) { return WalkAction::Continue; }
+
+  WalkAction at_medium_vertex(const MediumVertex& v) {
+    if (v.last) return WalkAction::Stop;
+    const float u_select = sampler_.next_1d();
+    const Vec2 u_light = sampler_.next_2d();
+    if (v.medium.sample_emitters())
+      px_.direct +=
+          v.beta * sample_direct_light_at_medium_point(scene_, v.p, v.medium, v.wo, sampler_, u_select, u_light);
+    return WalkAction::Continue;
+  }
+
+  WalkAction scattered_in_medium(const PhaseSample&) { return WalkAction::Continue; }
 
   Color flux;          // the photons' contribution, times the path's weight
   double photons = 0;  // how many were found
@@ -126,10 +149,15 @@ class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
     return std::make_unique<SppmPixels>(*this, scene, seed);
   }
 
-  std::string plan(const Scene&) const override {
+  bool renders_media() const override { return true; }
+
+  std::string plan(const Scene& scene) const override {
     return std::string("sppm: ") + std::to_string(photon_.photons) +
            " photons per iteration carry all indirect light; emission and next-event estimation at each "
-           "pixel's visible point";
+           "pixel's visible point" +
+           (scene.features().media ? "; media: the camera walk passes scattering events (direct light at each), "
+                                     "photons scatter in them and are kept on surfaces only"
+                                   : "");
   }
 
  private:
@@ -181,7 +209,7 @@ void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pix
   const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
   VisiblePoint visible(scene_, map, sampler, settings_.settings_, px);
   random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,
-              visible);
+              visible, scene_.sensor().medium());
   if (visible.photons > 0) {
     const double n_new = px.n + settings_.photon_.alpha * visible.photons;
     const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2

@@ -1,5 +1,5 @@
 // Stochastic progressive photon mapping against bdpt on the Cornell-box
-// family (24x24). Its bias shrinks with the iterations: the mean absolute
+// family (24x24), the fog and smoke boxes included. Its bias shrinks with the iterations: the mean absolute
 // difference of 4x4-pixel region means from bdpt's falls from 4 to 32
 // iterations, and at 32 iterations every region agrees with bdpt by a
 // two-sample test over independent runs (1%, Sidak-corrected over regions
@@ -25,7 +25,8 @@ namespace {
 using testing::HasSubstr;
 
 constexpr int kRuns = 10;
-const char* const kScenes[] = {"cornell-box", "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy"};
+const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
+                               "cornell-box-glossy", "cornell-box-fog",   "cornell-box-smoke"};
 
 LoadedScene box(const std::string& name, const std::string& integrator) {
   auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "24"}});
