@@ -10,6 +10,8 @@ packages=(
   libopencolorio-dev opencolorio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libpugixml-dev libtinyobjloader-dev libfmt-dev zlib1g-dev
+  # .vdb grids for heterogeneous media
+  libopenvdb-dev
   # mpirun -n N caustica render ...
   libopenmpi-dev openmpi-bin
   # tests/fuzz: libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer

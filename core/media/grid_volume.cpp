@@ -1,18 +1,28 @@
-// gridvolume: values on a voxel grid read from a Mitsuba .vol file,
-// interpolated trilinearly between voxel centres (or taken from the nearest
-// voxel) and clamped at the grid's border, as Mitsuba 3 samples its grids.
-// The grid fills the unit cube mapped by to_world (or, with use_grid_bbox,
-// the file's bounding box, then to_world); outside it the value is 0.
+// gridvolume: values on a voxel grid read from a Mitsuba .vol file or a
+// grid of an OpenVDB file, interpolated trilinearly between voxel centres
+// (or taken from the nearest voxel) and clamped at the grid's border, as
+// Mitsuba 3 samples its grids. A .vol grid fills the unit cube mapped by
+// to_world (or, with use_grid_bbox, the file's bounding box, then
+// to_world); an OpenVDB grid is held densely over the box of its active
+// voxels, placed where its own transform puts them, then by to_world.
+// Outside the grid's box the value is 0.
 //
 //   <volume type="gridvolume" name="sigma_t">
 //       <string name="filename" value="smoke.vol"/>
 //       <transform name="to_world"><scale value="0.3"/></transform>
 //   </volume>
+//   <volume type="gridvolume" name="sigma_t">
+//       <string name="filename" value="cloud.vdb"/>
+//       <string name="grid" value="density"/>
+//   </volume>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include "core/math/transform.h"
+#include "core/media/vdb_file.h"
 #include "core/media/vol_file.h"
 #include "core/media/volume.h"
 #include "core/registry/properties.h"
@@ -27,13 +37,16 @@ class GridVolume final : public Volume {
     if (filter != "trilinear" && filter != "nearest")
       throw props.error("filter_type", "must be trilinear or nearest, not '" + filter + "'");
     nearest_ = filter == "nearest";
+    const std::filesystem::path file = props.get_path("filename");
+    const bool vdb = is_vdb(file);
+    const std::string grid_name = props.get_string("grid");
     try {
-      grid_ = read_vol_file(props.get_path("filename"));
+      grid_ = vdb ? read_vdb_file(file, grid_name) : read_vol_file(file);
     } catch (const std::runtime_error& e) {
       throw props.error("filename", e.what());
     }
     Transform to_world = props.get_transform("to_world");
-    if (props.get_bool("use_grid_bbox")) {
+    if (props.get_bool("use_grid_bbox") || vdb) {
       const Bounds3& b = grid_.bbox;
       if (!(b.hi.x > b.lo.x && b.hi.y > b.lo.y && b.hi.z > b.lo.z))
         throw props.error("use_grid_bbox", "the file's bounding box is empty");
@@ -93,6 +106,11 @@ class GridVolume final : public Volume {
   Vec3 resolution() const override { return {float(grid_.nx), float(grid_.ny), float(grid_.nz)}; }
 
  private:
+  static bool is_vdb(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".vdb";
+  }
   static int clamp_index(int i, int n) { return std::clamp(i, 0, n - 1); }
   static int cell(float l, int n) { return clamp_index(int(l * n), n); }
 
@@ -110,11 +128,14 @@ class GridVolume final : public Volume {
 
 CAUSTICA_REGISTER_PLUGIN(
     GridVolume, "volume", "gridvolume",
-    {{"filename", ParamType::String, std::nullopt, "the Mitsuba .vol file (1 or 3 channels of 32-bit floats)"},
+    {{"filename", ParamType::String, std::nullopt,
+      "the Mitsuba .vol file (1 or 3 channels of 32-bit floats), or an OpenVDB .vdb file"},
+     {"grid", ParamType::String, "density", "the grid to read from a .vdb file (float or vec3s values)"},
      {"filter_type", ParamType::String, "trilinear", "trilinear (between voxel centres) or nearest"},
      {"to_world", ParamType::Transform, "",
       "maps the unit cube (or, with use_grid_bbox, the file's box) into the scene"},
-     {"use_grid_bbox", ParamType::Boolean, "false", "place the grid at the bounding box its file declares"},
+     {"use_grid_bbox", ParamType::Boolean, "false",
+      "place the grid at the bounding box its file declares (always so for .vdb files)"},
      {"raw", ParamType::Boolean, "false", "accepted; values are always used as stored here"},
      {"accel", ParamType::Boolean, "true", "accepted; interpolation is always done in software here"}},
     {});

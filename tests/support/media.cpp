@@ -14,12 +14,14 @@ std::shared_ptr<const Medium> make_medium(const std::string& element) {
   return std::shared_ptr<const Medium>(scene.scene, shape.interior());
 }
 
-std::shared_ptr<const Volume> make_grid_volume(const std::filesystem::path& file, const std::string& filter) {
+std::shared_ptr<const Volume> make_grid_volume(const std::filesystem::path& file, const std::string& filter,
+                                               const std::string& grid) {
   const PluginInfo& info = *Registry::instance().find("volume", "gridvolume");
   const SourceLocation where{"grid.xml", 1};
   Properties props(info, where);
   props.set("filename", {ValueKind::String, file.string(), where});
   props.set("filter_type", {ValueKind::String, filter, where});
+  props.set("grid", {ValueKind::String, grid, where});
   return std::dynamic_pointer_cast<const Volume>(info.create(props));
 }
 

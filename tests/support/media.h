@@ -13,8 +13,10 @@ namespace caustica::test {
 // name), made by the scene loader as the interior of a shape.
 std::shared_ptr<const Medium> make_medium(const std::string& element);
 
-// The gridvolume of `file`, with filter_type `filter`.
+// The gridvolume of `file`, with filter_type `filter` (and, for a .vdb
+// file, its grid `grid`).
 std::shared_ptr<const Volume> make_grid_volume(const std::filesystem::path& file,
-                                               const std::string& filter = "trilinear");
+                                               const std::string& filter = "trilinear",
+                                               const std::string& grid = "density");
 
 }  // namespace caustica::test
