@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/color/cie_tables.h"
+#include "core/color/xyz_to_rec709.h"
 
 namespace caustica {
 namespace {
@@ -111,11 +112,8 @@ Color spectrum_to_rgb(const SampledSpectrum& spectrum) {
     xyz[2] += s * table_at(kCieZ, nm);
     norm += table_at(kCieY, nm);
   }
-  for (double& v : xyz) v /= norm;
-  // XYZ to linear Rec.709 (IEC 61966-2-1).
-  return Color(float(3.2404542 * xyz[0] - 1.5371385 * xyz[1] - 0.4985314 * xyz[2]),
-               float(-0.9692660 * xyz[0] + 1.8760108 * xyz[1] + 0.0415560 * xyz[2]),
-               float(0.0556434 * xyz[0] - 0.2040259 * xyz[1] + 1.0572252 * xyz[2]));
+  const auto rgb = xyz_to_rec709({xyz[0] / norm, xyz[1] / norm, xyz[2] / norm});
+  return Color(float(rgb[0]), float(rgb[1]), float(rgb[2]));
 }
 
 }  // namespace caustica
