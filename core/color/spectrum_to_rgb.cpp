@@ -11,15 +11,6 @@
 namespace caustica {
 namespace {
 
-// A table value at `nm`, linear between the 5 nm samples, 0 outside.
-double table_at(const std::array<double, kCieSamples>& table, double nm) {
-  const double x = (nm - kCieFirstNm) / kCieStepNm;
-  if (x < 0 || x > kCieSamples - 1) return 0;
-  const int i = std::min(int(x), kCieSamples - 2);
-  const double t = x - i;
-  return table[size_t(i)] * (1 - t) + table[size_t(i) + 1] * t;
-}
-
 double spectrum_at(const SampledSpectrum& s, double nm) {
   if (s.nm.empty() || nm < s.nm.front() || nm > s.nm.back()) return 0;
   if (s.nm.size() == 1) return s.values.front();
@@ -107,10 +98,10 @@ Color spectrum_to_rgb(const SampledSpectrum& spectrum) {
   double xyz[3] = {0, 0, 0}, norm = 0;
   for (int nm = kCieFirstNm; nm <= kCieLastNm; ++nm) {
     const double s = spectrum_at(spectrum, nm);
-    xyz[0] += s * table_at(kCieX, nm);
-    xyz[1] += s * table_at(kCieY, nm);
-    xyz[2] += s * table_at(kCieZ, nm);
-    norm += table_at(kCieY, nm);
+    xyz[0] += s * cie_table_at(kCieX, nm);
+    xyz[1] += s * cie_table_at(kCieY, nm);
+    xyz[2] += s * cie_table_at(kCieZ, nm);
+    norm += cie_table_at(kCieY, nm);
   }
   const auto rgb = xyz_to_rec709({xyz[0] / norm, xyz[1] / norm, xyz[2] / norm});
   return Color(float(rgb[0]), float(rgb[1]), float(rgb[2]));

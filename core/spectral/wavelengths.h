@@ -1,0 +1,42 @@
+#pragma once
+
+#include <array>
+
+#include "core/math/color.h"
+
+namespace caustica {
+
+// The wavelengths a path carries in spectral mode. There are three, so that
+// a path's values at them ride in the Color every part of the transport
+// already passes around: channel i holds the value at wavelength i.
+// Wavelength 0 is the hero (the one whose index of refraction decides a
+// dispersive bounce).
+struct Wavelengths {
+  std::array<float, 3> nm{};
+  std::array<float, 3> pdf{};  // each one's density per nm
+};
+
+// The range spectral mode samples, that of the CIE tables.
+inline constexpr float kMinWavelengthNm = 360, kMaxWavelengthNm = 830;
+
+// Wavelengths are drawn from a density that follows the eye's sensitivity,
+// p(l) proportional to 1 / cosh^2(0.0072 (l - 538 nm)) over the range
+// (Radziszewski et al. 2009), whose integral is a tanh and inverts in closed
+// form.
+float visible_wavelength_pdf(float nm);
+float sample_visible_wavelength(float u);
+
+// Three wavelengths from one uniform number u: the hero at u, the others at
+// u + 1/3 and u + 2/3 (modulo 1) through the same inversion, so that each
+// follows the density above and the three spread over the spectrum.
+Wavelengths sample_wavelengths(float u);
+
+// The CIE XYZ a path's spectral radiance `values` (at w) estimates: the
+// average over the wavelengths of value x (x, y, z)(l) / pdf(l), over the
+// integral of y, so that a flat spectrum of 1 gives X = Y = Z = 1, as
+// spectrum_to_rgb converts spectra in scene files.
+std::array<double, 3> spectral_to_xyz(Color values, const Wavelengths& w);
+// The same in linear Rec.709.
+Color spectral_to_rgb(Color values, const Wavelengths& w);
+
+}  // namespace caustica
