@@ -8,6 +8,7 @@
 //   </bsdf>
 
 #include "core/bsdf/bsdf.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -22,10 +23,11 @@ class DiffuseBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kDiffuseReflection; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};
-    return reflectance_->eval(ctx.uv) * kInvPi;
+    return reflectance_at(*reflectance_, ctx) * kInvPi;
   }
 
   float pdf(const BsdfContext&, Vec3 wo, Vec3 wi) const override {
@@ -38,11 +40,11 @@ class DiffuseBsdf final : public Bsdf {
     const Vec3 wi = square_to_cosine_hemisphere(u);
     const float pdf = cosine_hemisphere_pdf(cos_theta(wi));
     if (pdf <= 0) return std::nullopt;
-    return BsdfSample{wi, reflectance_->eval(ctx.uv) * kInvPi, pdf, kDiffuseReflection, 1};
+    return BsdfSample{wi, reflectance_at(*reflectance_, ctx) * kInvPi, pdf, kDiffuseReflection, 1};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    return cos_theta(wo) > 0 ? reflectance_->eval(ctx.uv) : Color();
+    return cos_theta(wo) > 0 ? reflectance_at(*reflectance_, ctx) : Color();
   }
 
  private:

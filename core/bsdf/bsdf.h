@@ -6,6 +6,7 @@
 #include "core/math/color.h"
 #include "core/math/frame.h"
 #include "core/registry/plugin.h"
+#include "core/spectral/wavelengths.h"
 
 namespace caustica {
 
@@ -40,6 +41,9 @@ struct BsdfContext {
   // length (their lengths scale texture derivatives); bump and normal maps
   // build their perturbed frames from them.
   Vec3 dpdu{1, 0, 0}, dpdv{0, 1, 0};
+  // In spectral mode, the path's wavelengths: values are returned at them
+  // (channel i at wavelength i) rather than in RGB. Null in RGB mode.
+  const Wavelengths* wavelengths = nullptr;
 };
 
 // A sampled direction. For a delta lobe f and pdf are the discrete lobe's
@@ -70,6 +74,9 @@ class Bsdf : public Plugin {
   // does a surface transform them into the shading frame for it; a
   // material says false once its values cannot depend on them.
   virtual bool reads_tangents() const { return true; }
+  // Whether it returns values at the context's wavelengths in spectral
+  // mode; a scene holding one that does not is not rendered spectrally.
+  virtual bool renders_spectral() const { return false; }
 };
 
 }  // namespace caustica

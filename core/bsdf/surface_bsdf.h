@@ -14,8 +14,11 @@ namespace caustica {
 // correction (Veach 1997, section 5.3).
 class SurfaceBsdf {
  public:
-  SurfaceBsdf(const Bsdf& bsdf, const SurfaceInteraction& si, TransportMode mode)
+  // With `wavelengths` (spectral mode) its values are at them.
+  SurfaceBsdf(const Bsdf& bsdf, const SurfaceInteraction& si, TransportMode mode,
+              const Wavelengths* wavelengths = nullptr)
       : bsdf_(&bsdf), frame_(si.shading), ng_(si.ng), ctx_{mode, si.uv} {
+    ctx_.wavelengths = wavelengths;
     // Shapes without a parametrisation leave the tangents zero; the
     // defaults (the shading frame's own axes) stand in for them. Most
     // materials never read them, and skip their transformation.

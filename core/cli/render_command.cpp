@@ -39,6 +39,10 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("--seed", seed_, "random seed");
   command_->add_option("--exr-format", exr_format_, "half or float (default: the film's component_format)")
       ->check(CLI::IsMember({"half", "float"}));
+  command_
+      ->add_option("--spectral", spectral_,
+                   "on: paths carry wavelengths; off: RGB; auto: as the scene needs (default: auto)")
+      ->check(CLI::IsMember({"on", "off", "auto"}));
   command_->add_option("--debug-pixel", debug_pixel_, "replay one sample of pixel X,Y and print it");
   command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays");
   command_->add_flag("-q,--quiet", quiet_, "print nothing but errors");
@@ -120,6 +124,9 @@ int RenderCommand::render(const RankSession* session) const {
   settings.first_sample = first_sample_;
   settings.time_limit = time_;
   settings.seed = seed_;
+  settings.transport = spectral_ == "on"    ? RenderSettings::Transport::Spectral
+                       : spectral_ == "off" ? RenderSettings::Transport::Rgb
+                                            : RenderSettings::Transport::AsTheSceneNeeds;
   // The ranks on one machine share its cores.
   settings.threads = threads_ > 0 || !session
                          ? threads_

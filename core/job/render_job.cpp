@@ -7,6 +7,11 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
       settings_(std::move(settings)),
       integrator_(settings_.integrator.empty() ? scene_.integrator
                                                : make_integrator(settings_.integrator, scene_.integrator_values)) {
+  if (settings_.transport != RenderSettings::Transport::AsTheSceneNeeds) {
+    SceneFeatures f = scene_->features();
+    force_spectral(f, settings_.transport == RenderSettings::Transport::Spectral);
+    scene_->set_features(std::move(f));
+  }
   integrator_->check_scene(*scene_);
 }
 

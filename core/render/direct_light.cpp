@@ -1,6 +1,7 @@
 #include "core/render/direct_light.h"
 
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 
 namespace caustica {
 
@@ -13,14 +14,15 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
 }
 
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
-                          float u_select, Vec2 u_light, float n_light, float n_bsdf) {
+                          float u_select, Vec2 u_light, float n_light, float n_bsdf, const Wavelengths* wavelengths) {
   const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
   const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
   if (f.is_black()) return {};
   if (scene.occluded(shadow_ray(si, ls))) return {};
-  return f * ls.Li * (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
+  const Color Li = wavelengths ? lift_illuminant(ls.Li, *wavelengths) : ls.Li;
+  return f * Li * (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

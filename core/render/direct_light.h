@@ -6,6 +6,7 @@
 #include "core/lights/emitter.h"
 #include "core/math/color.h"
 #include "core/render/mis.h"
+#include "core/spectral/wavelengths.h"
 
 namespace caustica {
 
@@ -32,9 +33,12 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
 // above, a shadow ray, and the multiple importance sampling weight against
 // BSDF sampling (taking n_bsdf BSDF samples for every n_light light
 // samples). Returns the unoccluded contribution f * Li * |cos| * weight /
-// pdf, not yet multiplied by the path's throughput.
+// pdf, not yet multiplied by the path's throughput. With `wavelengths`
+// (spectral mode, the BSDF built for them) the emitter's radiance is
+// lifted to them too.
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
-                          float u_select, Vec2 u_light, float n_light = 1, float n_bsdf = 1);
+                          float u_select, Vec2 u_light, float n_light = 1, float n_bsdf = 1,
+                          const Wavelengths* wavelengths = nullptr);
 
 // The shadow ray from `si` toward the chosen light.
 inline Ray shadow_ray(const SurfaceInteraction& si, const LiSample& ls) {

@@ -112,7 +112,17 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
     f.caustics_reason = "a light reaches a surface with a delta lobe: " + lit_specular->kind();
   }
   count_media(scene, f);
+  std::set<std::string> rgb_only;
+  for (const auto& s : scene.shapes())
+    if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
+  f.rgb_only_materials.assign(rgb_only.begin(), rgb_only.end());
+  f.spectral_reason = "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
   return f;
+}
+
+void force_spectral(SceneFeatures& f, bool spectral) {
+  f.spectral = spectral;
+  f.spectral_reason = "forced by the render settings";
 }
 
 std::string describe(const SceneFeatures& f) {
@@ -130,7 +140,7 @@ std::string describe(const SceneFeatures& f) {
         << " heterogeneous; " << f.chromatic_media << " with extinction differing between channels)";
     if (f.camera_in_medium) out << "; the camera sits in one";
   }
-  out << "\n";
+  out << "\nspectral transport: " << (f.spectral ? "yes (" : "no, RGB (") << f.spectral_reason << ")\n";
   return out.str();
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace caustica {
 
@@ -28,12 +29,22 @@ struct SceneFeatures {
   // Paths must track media and step through null (index-matched) surfaces;
   // where neither occurs the walk takes no medium branch at all.
   bool medium_walk = false;
+  // Spectral transport: whether paths carry wavelengths, and why (what the
+  // scene holds, or a render setting that decided it); the materials, by
+  // plugin name, that cannot be rendered spectrally yet.
+  bool spectral = false;
+  std::string spectral_reason;
+  std::vector<std::string> rgb_only_materials;
 };
 
 // Looks at the scene's materials, lights and camera; whether a light
 // reaches a delta surface is decided by shadow rays from 256 points spread
 // over each such surface to every light.
 SceneFeatures analyze_scene(const Scene& scene, bool textures);
+
+// Spectral or RGB transport as a render setting decides, in place of the
+// analysis's choice.
+void force_spectral(SceneFeatures& f, bool spectral);
 
 // A few lines for `caustica info`.
 std::string describe(const SceneFeatures& features);

@@ -90,7 +90,7 @@ concept MediumVisitor = requires(Visitor& v, const MediumVertex& mv, const Phase
 
 template <bool kMedia, class Visitor>
 void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
-                   Sampler& sampler, Visitor& visitor, const Medium* medium) {
+                   Sampler& sampler, Visitor& visitor, const Medium* medium, const Wavelengths* wavelengths) {
   if (limits.max_segments == 0) return;
   Color throughput(1);
   float eta_scale = 1;
@@ -139,7 +139,7 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       visitor.escaped(WalkEscape{ray, beta, segments, arrival});
       return;
     }
-    const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, mode);
+    const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, mode, wavelengths);
     const Vec3 wo = -ray.d;
     if (visitor.at_vertex(WalkVertex{*si, bsdf, wo, beta, segments, last, arrival, medium}) == WalkAction::Stop || last)
       return;
@@ -165,17 +165,19 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
 
 // Walks from `ray`, which carries `beta` and starts in `medium`, until the
 // path escapes, a visitor stops it, the BSDF absorbs it, roulette ends it,
-// or it reaches limits.max_segments.
+// or it reaches limits.max_segments. With `wavelengths` (spectral mode) the
+// BSDFs return values at them, and beta holds the path's values there.
 template <class Visitor>
 void random_walk(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
-                 Sampler& sampler, Visitor& visitor, const Medium* medium = nullptr) {
+                 Sampler& sampler, Visitor& visitor, const Medium* medium = nullptr,
+                 const Wavelengths* wavelengths = nullptr) {
   if constexpr (MediumVisitor<Visitor>) {
     if (scene.features().medium_walk) {
-      walk_segments<true>(scene, ray, beta, mode, limits, sampler, visitor, medium);
+      walk_segments<true>(scene, ray, beta, mode, limits, sampler, visitor, medium, wavelengths);
       return;
     }
   }
-  walk_segments<false>(scene, ray, beta, mode, limits, sampler, visitor, nullptr);
+  walk_segments<false>(scene, ray, beta, mode, limits, sampler, visitor, nullptr, wavelengths);
 }
 
 }  // namespace caustica

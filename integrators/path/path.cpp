@@ -14,6 +14,7 @@
 #include "core/render/path_settings.h"
 #include "core/render/pixel_integrator.h"
 #include "core/scene/scene.h"
+#include "core/spectral/wavelengths.h"
 #include "integrators/path/path_tracing.h"
 
 namespace caustica {
@@ -23,11 +24,15 @@ class PathIntegrator : public RadianceIntegrator {
  public:
   explicit PathIntegrator(const Properties& props) : settings_(read_path_settings(props)) {}
 
+  // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    return trace_path(scene, ray, sampler, settings_);
+    if (!scene.features().spectral) return trace_path(scene, ray, sampler, settings_);
+    const Wavelengths w = sample_wavelengths(sampler.next_1d());
+    return spectral_to_rgb(trace_path(scene, ray, sampler, settings_, nullptr, &w), w);
   }
 
   bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     const SceneFeatures& f = scene.features();
@@ -36,7 +41,8 @@ class PathIntegrator : public RadianceIntegrator {
            (f.caustic_paths ? "; caustics only by BSDF sampling (noisy)" : "") +
            (f.media ? "; media: free flights sampled, direct light at scattering events weighed against the phase "
                       "function"
-                    : "; no media, the walk skips them");
+                    : "; no media, the walk skips them") +
+           (f.spectral ? "; spectral: three wavelengths per path, RGB lifted to spectra" : "");
   }
 
  private:

@@ -2,6 +2,7 @@
 
 #include "core/render/direct_light.h"
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 #include "core/transport/direct_light_in_media.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
@@ -15,13 +16,14 @@ namespace {
 template <bool kMedia>
 class PathRadiance {
  public:
-  PathRadiance(const Scene& scene, Sampler& sampler, const PathSettings& settings, const CausticEstimator* caustics)
-      : scene_(scene), sampler_(sampler), settings_(settings), caustics_(caustics) {}
+  PathRadiance(const Scene& scene, Sampler& sampler, const PathSettings& settings, const CausticEstimator* caustics,
+               const Wavelengths* wavelengths)
+      : scene_(scene), sampler_(sampler), settings_(settings), caustics_(caustics), wavelengths_(wavelengths) {}
 
   WalkAction at_vertex(const WalkVertex& v) {
     if (shows_emission(v.segments))
       emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                          [&](const Emitter&, Color Le, float w) { L += v.beta * Le * w; });
+                          [&](const Emitter&, Color Le, float w) { L += v.beta * emitted(Le) * w; });
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
@@ -30,7 +32,7 @@ class PathRadiance {
       if constexpr (kMedia)
         L += v.beta * sample_direct_light_in_media(scene_, v.si, v.bsdf, v.wo, v.medium, sampler_, u_select, u_light);
       else
-        L += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light);
+        L += v.beta * sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, 1, 1, wavelengths_);
     }
     if (non_delta && caustics_) L += v.beta * caustics_->estimate(v.si, v.bsdf, v.wo, v.segments);
     return WalkAction::Continue;
@@ -39,7 +41,7 @@ class PathRadiance {
   void escaped(const WalkEscape& e) {
     if (shows_emission(e.segments))
       emission_from_environment(scene_, e.ray.d, e.arrival, {},
-                                [&](const Emitter&, Color Le, float w) { L += e.beta * Le * w; });
+                                [&](const Emitter&, Color Le, float w) { L += e.beta * emitted(Le) * w; });
   }
 
   WalkAction at_medium_vertex(const MediumVertex& v) requires kMedia {
@@ -79,10 +81,14 @@ class PathRadiance {
     return (segments > 1 || !settings_.hide_emitters) && !(gathered_ && delta_bounces_since_ > 0);
   }
 
+  // An emitter's radiance, at the path's wavelengths in spectral mode.
+  Color emitted(Color Le) const { return wavelengths_ ? lift_illuminant(Le, *wavelengths_) : Le; }
+
   const Scene& scene_;
   Sampler& sampler_;
   const PathSettings& settings_;
   const CausticEstimator* caustics_;
+  const Wavelengths* wavelengths_;
   bool gathered_ = false;
   int delta_bounces_since_ = 0;
 };
@@ -90,15 +96,16 @@ class PathRadiance {
 }  // namespace
 
 Color trace_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
-                 const CausticEstimator* caustics) {
+                 const CausticEstimator* caustics, const Wavelengths* wavelengths) {
   if (scene.features().medium_walk) {
-    PathRadiance<true> radiance(scene, sampler, settings, caustics);
+    PathRadiance<true> radiance(scene, sampler, settings, caustics, wavelengths);
     random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance,
-                scene.sensor().medium());
+                scene.sensor().medium(), wavelengths);
     return radiance.L;
   }
-  PathRadiance<false> radiance(scene, sampler, settings, caustics);
-  random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance);
+  PathRadiance<false> radiance(scene, sampler, settings, caustics, wavelengths);
+  random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance, nullptr,
+              wavelengths);
   return radiance.L;
 }
 

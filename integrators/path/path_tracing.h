@@ -32,7 +32,10 @@ class CausticEstimator {
 // estimator's caustic light, and the walk leaves those paths to it: an
 // emitter reached through delta bounces only, after a non-delta bounce, is
 // not counted again. Nothing is counted twice and nothing is missed.
+//
+// With `wavelengths` (spectral mode) the result is the path's radiance at
+// them, channel i at wavelength i.
 Color trace_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
-                 const CausticEstimator* caustics = nullptr);
+                 const CausticEstimator* caustics = nullptr, const Wavelengths* wavelengths = nullptr);
 
 }  // namespace caustica
