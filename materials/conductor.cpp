@@ -17,6 +17,7 @@
 #include "core/bsdf/conductor_data.h"
 #include "core/bsdf/delta_bsdf.h"
 #include "core/bsdf/fresnel.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture_parameter.h"
 
@@ -29,6 +30,7 @@ class ConductorBsdf final : public DeltaBsdf {
       : ior_(conductor_ior(props)), specular_reflectance_(read_reflectance(props, "specular_reflectance")) {}
 
   uint32_t lobes() const override { return kDeltaReflection; }
+  bool renders_spectral() const override { return true; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float, Vec2) const override {
     if (!(cos_theta(wo) > 0)) return std::nullopt;
@@ -42,7 +44,7 @@ class ConductorBsdf final : public DeltaBsdf {
 
  private:
   Color reflectance(const BsdfContext& ctx, Vec3 wo) const {
-    return fresnel_conductor(cos_theta(wo), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+    return fresnel_conductor_at(ctx, cos_theta(wo), ior_) * reflectance_at(*specular_reflectance_, ctx);
   }
 
   ConductorIor ior_;

@@ -28,6 +28,7 @@
 #include "core/bsdf/delta_bsdf.h"
 #include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -38,26 +39,28 @@ class DielectricBsdf final : public DeltaBsdf {
   explicit DielectricBsdf(const Properties& props) : interface_(props) {}
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
+  bool renders_spectral() const override { return true; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
     if (wo.z == 0) return std::nullopt;
     const DielectricFresnel fr = fresnel(wo.z);
     if (u_lobe < fr.F) {
       const Vec3 wi(-wo.x, -wo.y, wo.z);
-      return BsdfSample{wi, interface_.reflectance->eval(ctx.uv) * (fr.F / std::abs(wi.z)), fr.F, kDeltaReflection, 1};
+      return BsdfSample{wi, reflectance_at(*interface_.reflectance, ctx) * (fr.F / std::abs(wi.z)), fr.F,
+                        kDeltaReflection, 1};
     }
     const Vec3 wi = refract(wo, Vec3(0, 0, 1), fr.cos_t, fr.eta_ti);
     if (wi.z * wo.z >= 0) return std::nullopt;
     // eta_ti^2 = (index on wo's side / index on wi's side)^2.
     const float scale = ctx.mode == TransportMode::Radiance ? fr.eta_ti * fr.eta_ti : 1.0f;
     const float T = 1 - fr.F;
-    return BsdfSample{wi, interface_.transmittance->eval(ctx.uv) * (T * scale / std::abs(wi.z)), T, kDeltaTransmission,
-                      fr.eta_it};
+    return BsdfSample{wi, reflectance_at(*interface_.transmittance, ctx) * (T * scale / std::abs(wi.z)), T,
+                      kDeltaTransmission, fr.eta_it};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     const float F = fresnel(wo.z).F;
-    return interface_.reflectance->eval(ctx.uv) * F + interface_.transmittance->eval(ctx.uv) * (1 - F);
+    return reflectance_at(*interface_.reflectance, ctx) * F + reflectance_at(*interface_.transmittance, ctx) * (1 - F);
   }
 
  private:

@@ -20,6 +20,7 @@ class NullBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kNull; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
   // The walk steps through null surfaces without asking them anything; a
   // path that does ask finds nothing to scatter.
   Color eval(const BsdfContext&, Vec3, Vec3) const override { return {}; }

@@ -24,6 +24,7 @@
 #include <cmath>
 
 #include "core/bsdf/bsdf.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -53,12 +54,13 @@ class PhongBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kDiffuseReflection | kGlossyReflection; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};
-    Color f = kd_->eval(ctx.uv) * kInvPi;
+    Color f = reflectance_at(*kd_, ctx) * kInvPi;
     const float cos_alpha = dot(wi, mirror(wo));
-    if (cos_alpha > 0) f += ks_->eval(ctx.uv) * ((exponent_ + 2) * kInv2Pi * std::pow(cos_alpha, exponent_));
+    if (cos_alpha > 0) f += reflectance_at(*ks_, ctx) * ((exponent_ + 2) * kInv2Pi * std::pow(cos_alpha, exponent_));
     return f;
   }
 
@@ -101,7 +103,7 @@ class PhongBsdf final : public Bsdf {
   // lower bound for narrow lobes elsewhere).
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     if (cos_theta(wo) <= 0) return {};
-    return kd_->eval(ctx.uv) + ks_->eval(ctx.uv) * cos_theta(wo);
+    return reflectance_at(*kd_, ctx) + reflectance_at(*ks_, ctx) * cos_theta(wo);
   }
 
  private:

@@ -33,6 +33,7 @@
 #include "core/bsdf/bsdf.h"
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/ior.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -56,11 +57,12 @@ class PlasticBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kDeltaReflection | kDiffuseReflection; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};
     const float t = (1 - fresnel(wo)) * (1 - fresnel(wi)) / (eta_ * eta_);
-    return base(kd_->eval(ctx.uv)) * (t * kInvPi);
+    return base(reflectance_at(*kd_, ctx)) * (t * kInvPi);
   }
 
   float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
@@ -77,7 +79,7 @@ class PlasticBsdf final : public Bsdf {
     if (!(p_spec >= 0)) return std::nullopt;  // black
     if (u_lobe < p_spec) {
       const Vec3 wi = mirror(wo);
-      return BsdfSample{wi, ks_->eval(ctx.uv) * (F / cos_theta(wi)), p_spec, kDeltaReflection, 1};
+      return BsdfSample{wi, reflectance_at(*ks_, ctx) * (F / cos_theta(wi)), p_spec, kDeltaReflection, 1};
     }
     const Vec3 wi = square_to_cosine_hemisphere(u);
     const float pdf_wi = (1 - p_spec) * cosine_hemisphere_pdf(cos_theta(wi));
@@ -90,7 +92,7 @@ class PlasticBsdf final : public Bsdf {
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     if (cos_theta(wo) <= 0) return {};
     const float F = fresnel(wo);
-    return ks_->eval(ctx.uv) * F + base(kd_->eval(ctx.uv)) * ((1 - F) * (1 - fdr_));
+    return reflectance_at(*ks_, ctx) * F + base(reflectance_at(*kd_, ctx)) * ((1 - F) * (1 - fdr_));
   }
 
  private:

@@ -28,6 +28,7 @@
 #include "core/bsdf/conductor_data.h"
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/microfacet_params.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture_parameter.h"
 
@@ -52,6 +53,7 @@ class RoughConductorBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kGlossyReflection; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     return eval_with(roughness_.at(ctx.uv), ctx, wo, wi);
@@ -78,7 +80,7 @@ class RoughConductorBsdf final : public Bsdf {
   // ignores the energy lost between facets, close for low roughness.
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     if (!(cos_theta(wo) > 0)) return {};
-    return fresnel_conductor(cos_theta(wo), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+    return fresnel_conductor_at(ctx, cos_theta(wo), ior_) * reflectance_at(*specular_reflectance_, ctx);
   }
 
  private:
@@ -89,7 +91,7 @@ class RoughConductorBsdf final : public Bsdf {
     const float D = d.D(m);
     if (D == 0) return {};
     const float G = d.G(wo, wi, m);
-    const Color F = fresnel_conductor(dot(wo, m), ior_.eta, ior_.k) * specular_reflectance_->eval(ctx.uv);
+    const Color F = fresnel_conductor_at(ctx, dot(wo, m), ior_) * reflectance_at(*specular_reflectance_, ctx);
     return F * (D * G / (4 * cos_theta(wo) * cos_theta(wi)));
   }
   float pdf_with(const MicrofacetDistribution& d, Vec3 wo, Vec3 wi) const {

@@ -43,6 +43,7 @@
 #include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/microfacet_params.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -54,6 +55,7 @@ class RoughDielectricBsdf final : public Bsdf {
       : interface_(props), roughness_(props), sample_visible_(props.get_bool("sample_visible")) {}
 
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
   }
@@ -71,7 +73,7 @@ class RoughDielectricBsdf final : public Bsdf {
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
     if (wo.z == 0) return std::nullopt;
     if (index_matched())
-      return BsdfSample{-wo, interface_.transmittance->eval(ctx.uv) / std::abs(wo.z), 1, kDeltaTransmission, 1};
+      return BsdfSample{-wo, reflectance_at(*interface_.transmittance, ctx) / std::abs(wo.z), 1, kDeltaTransmission, 1};
     // Facets are seen from wo's side; the distribution is symmetric under
     // m -> (-m.x, -m.y, m.z), so wo inside samples as -wo outside.
     const MicrofacetDistribution distribution = roughness_.at(ctx.uv);
@@ -97,7 +99,7 @@ class RoughDielectricBsdf final : public Bsdf {
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, interface_.eta).F;
-    return interface_.reflectance->eval(ctx.uv) * F + interface_.transmittance->eval(ctx.uv) * (1 - F);
+    return reflectance_at(*interface_.reflectance, ctx) * F + reflectance_at(*interface_.transmittance, ctx) * (1 - F);
   }
 
  private:
@@ -137,7 +139,7 @@ class RoughDielectricBsdf final : public Bsdf {
     if (wo.z * wi.z > 0) {
       // Jacobian of the reflected direction: d(omega_m) / d(omega_i) = 1 / (4 |wi.m|).
       const float f = F * D * G / (4 * cos_o * cos_i);
-      return {interface_.reflectance->eval(ctx.uv) * f, F * pdf_m / (4 * std::abs(wo_m))};
+      return {reflectance_at(*interface_.reflectance, ctx) * f, F * pdf_m / (4 * std::abs(wo_m))};
     }
     if (F >= 1) return {};
     const float eta = wo.z > 0 ? interface_.eta : 1 / interface_.eta;  // index on wi's side over wo's
@@ -146,7 +148,7 @@ class RoughDielectricBsdf final : public Bsdf {
     const float jacobian = eta * eta * std::abs(wi_m) / (denom * denom);
     const float scale = ctx.mode == TransportMode::Radiance ? 1 : eta * eta;
     const float f = (1 - F) * D * G * std::abs(wo_m * wi_m) * scale / (cos_o * cos_i * denom * denom);
-    const Evaluation e{interface_.transmittance->eval(ctx.uv) * f, (1 - F) * pdf_m * jacobian};
+    const Evaluation e{reflectance_at(*interface_.transmittance, ctx) * f, (1 - F) * pdf_m * jacobian};
     if (!e.f.is_finite() || !std::isfinite(e.pdf)) return {};
     return e;
   }

@@ -48,6 +48,7 @@
 #include "core/bsdf/fresnel.h"
 #include "core/bsdf/ior.h"
 #include "core/bsdf/microfacet_params.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -71,6 +72,7 @@ class RoughPlasticBsdf final : public Bsdf {
 
   uint32_t lobes() const override { return kGlossyReflection | kDiffuseReflection; }
   bool reads_tangents() const override { return false; }
+  bool renders_spectral() const override { return true; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     if (cos_theta(wo) <= 0 || cos_theta(wi) <= 0) return {};
@@ -129,7 +131,7 @@ class RoughPlasticBsdf final : public Bsdf {
 
   ShadingPoint at(const BsdfContext& ctx, Vec3 wo) const {
     const MicrofacetDistribution dist = roughness_.at(ctx.uv);
-    const Color kd = kd_->eval(ctx.uv), ks = ks_->eval(ctx.uv);
+    const Color kd = reflectance_at(*kd_, ctx), ks = reflectance_at(*ks_, ctx);
     const float e_o = coating_(dist.alpha_u(), cos_theta(wo));
     const float s = e_o * ks.average(), d = (1 - e_o) * kd.average();
     return {dist, kd, ks, e_o, s + d > 0 ? s / (s + d) : std::nanf("")};

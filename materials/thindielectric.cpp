@@ -21,6 +21,7 @@
 #include "core/bsdf/delta_bsdf.h"
 #include "core/bsdf/dielectric_interface.h"
 #include "core/bsdf/fresnel.h"
+#include "core/bsdf/reflectance_at.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -31,20 +32,21 @@ class ThinDielectricBsdf final : public DeltaBsdf {
   explicit ThinDielectricBsdf(const Properties& props) : interface_(props) {}
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
+  bool renders_spectral() const override { return true; }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
     if (wo.z == 0) return std::nullopt;
     const float R = reflectance(std::abs(wo.z)), T = 1 - R;
     const float inv_cos = 1 / std::abs(wo.z);  // |wi.z| = |wo.z| for both lobes
     if (u_lobe < R)
-      return BsdfSample{Vec3(-wo.x, -wo.y, wo.z), interface_.reflectance->eval(ctx.uv) * (R * inv_cos), R,
+      return BsdfSample{Vec3(-wo.x, -wo.y, wo.z), reflectance_at(*interface_.reflectance, ctx) * (R * inv_cos), R,
                         kDeltaReflection, 1};
-    return BsdfSample{-wo, interface_.transmittance->eval(ctx.uv) * (T * inv_cos), T, kDeltaTransmission, 1};
+    return BsdfSample{-wo, reflectance_at(*interface_.transmittance, ctx) * (T * inv_cos), T, kDeltaTransmission, 1};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
     const float R = reflectance(std::abs(wo.z));
-    return interface_.reflectance->eval(ctx.uv) * R + interface_.transmittance->eval(ctx.uv) * (1 - R);
+    return reflectance_at(*interface_.reflectance, ctx) * R + reflectance_at(*interface_.transmittance, ctx) * (1 - R);
   }
 
  private:

@@ -18,9 +18,12 @@
 
 #include <cmath>
 
+#include "core/bsdf/bsdf.h"
 #include "core/color/cie_tables.h"
 #include "core/color/rgb_spectrum_table.h"
 #include "core/color/spectrum_to_rgb.h"
+#include "core/registry/properties.h"
+#include "core/sampling/warp.h"
 #include "core/scene/scene.h"
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
@@ -119,6 +122,21 @@ TEST(SpectralPath, DirectLightAgreesWithRgbUnderAWhiteLight) {
         << " +- " << a[i].standard_error;
 }
 
+// A material that has no spectral evaluation.
+class RgbOnlyBsdf final : public Bsdf {
+ public:
+  explicit RgbOnlyBsdf(const Properties&) {}
+  uint32_t lobes() const override { return kDiffuseReflection; }
+  Color eval(const BsdfContext&, Vec3, Vec3) const override { return Color(0.1f); }
+  float pdf(const BsdfContext&, Vec3, Vec3 wi) const override { return cosine_hemisphere_pdf(cos_theta(wi)); }
+  std::optional<BsdfSample> sample(const BsdfContext&, Vec3, float, Vec2 u) const override {
+    const Vec3 wi = square_to_cosine_hemisphere(u);
+    return BsdfSample{wi, Color(0.1f), cosine_hemisphere_pdf(cos_theta(wi)), kDiffuseReflection, 1};
+  }
+  Color albedo(const BsdfContext&, Vec3) const override { return Color(0.3f); }
+};
+CAUSTICA_REGISTER_PLUGIN(RgbOnlyBsdf, "bsdf", "test_rgb_only", {}, {});
+
 std::string render_error(const LoadedScene& scene) {
   try {
     test::render_scene(scene, 1);
@@ -134,14 +152,14 @@ TEST(SpectralPath, WhatCannotBeRenderedSpectrallyIsRefused) {
   EXPECT_THAT(render_error(bdpt),
               HasSubstr("integrator 'bdpt' does not render with spectral transport (forced by the render settings) "
                         "yet; render furnace.xml with path, volpath, or in RGB"));
-  const auto glass = test::scene_from_xml(
-      "<scene version='3.0.0'><shape type='sphere'><bsdf type='dielectric'/></shape>"
-      "<shape type='rectangle'><bsdf type='roughconductor'/></shape>"
+  const auto rgb_only = test::scene_from_xml(
+      "<scene version='3.0.0'><shape type='sphere'><bsdf type='test_rgb_only'/></shape>"
+      "<shape type='rectangle'><bsdf type='twosided'><bsdf type='test_rgb_only'/></bsdf></shape>"
       "<emitter type='point'><point name='position' x='0' y='3' z='0'/></emitter></scene>",
-      "glass.xml");
-  make_spectral(glass);
-  EXPECT_THAT(render_error(glass), HasSubstr("glass.xml: its materials dielectric, roughconductor cannot be rendered "
-                                             "with spectral transport (forced by the render settings) yet"));
+      "rgb.xml");
+  make_spectral(rgb_only);
+  EXPECT_THAT(render_error(rgb_only), HasSubstr("rgb.xml: its materials test_rgb_only, twosided cannot be rendered "
+                                                "with spectral transport (forced by the render settings) yet"));
   const auto fog = test::scene_from_xml(
       "<scene version='3.0.0'><medium type='homogeneous' id='m'/><shape type='sphere'><ref name='interior' "
       "id='m'/></shape><emitter type='point'><point name='position' x='0' y='3' z='0'/></emitter></scene>",
