@@ -21,6 +21,7 @@
 //
 //   <integrator type="bdpt"><integer name="strategy_layers" value="4"/></integrator>
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -30,6 +31,7 @@
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 #include "core/transport/emission.h"
 #include "core/transport/shadow_transmittance.h"
 #include "integrators/bidirectional/camera_connection.h"
@@ -81,9 +83,15 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     std::fill(out.begin(), out.end(), 0.0f);
     thread_local std::vector<PathVertex> camera, light;
     const CameraSample cs = sample_camera_ray(scene, sampler, id.pixel, id.index, seed);
-    trace_camera_subpath(scene, cs.ray, sampler, settings_, camera);
+    // In spectral mode both subpaths carry the wavelengths the camera ray
+    // draws, and every strategy's value converts to RGB as it is added.
+    std::optional<Wavelengths> w;
+    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
+    const Wavelengths* wavelengths = w ? &*w : nullptr;
+    const auto rgb = [&](Color c) { return w ? spectral_to_rgb(c, *w) : c; };
+    trace_camera_subpath(scene, cs.ray, sampler, settings_, camera, wavelengths);
     compute_densities(scene, camera);
-    trace_light_subpath(scene, sampler, settings_, light);
+    trace_light_subpath(scene, sampler, settings_, light, wavelengths);
     compute_densities(scene, light);
 
     for (int t = 1; t <= int(camera.size()); ++t)
@@ -93,14 +101,14 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
         if (k == 1 && settings_.hide_emitters) continue;
         const bool layer = k <= layers_;
         if (t == 1) {
-          const auto c = connect_to_camera(scene, light, s, sampler);
+          const auto c = connect_to_camera(scene, light, s, sampler, wavelengths);
           if (!c) continue;
           const Color value =
-              c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_);
+              rgb(c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_));
           splats.add(c->raster, value);
           if (layer) splats.add(c->raster, value, layer_channel(s, t));
         } else {
-          const Color value = connect(scene, light, s, camera, t, sampler);
+          const Color value = rgb(connect(scene, light, s, camera, t, sampler, wavelengths));
           add(out, 0, value);
           if (layer) add(out, layer_channel(s, t), value);
         }
@@ -109,6 +117,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
   }
 
   bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("bdpt: every (s, t) strategy, weighed by the ") +
@@ -126,10 +135,10 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
 
   // The weighted contribution of strategy (s, t) for t >= 2.
   Color connect(const Scene& scene, std::span<const PathVertex> light, int s, std::vector<PathVertex>& camera, int t,
-                Sampler& sampler) const {
+                Sampler& sampler, const Wavelengths* wavelengths) const {
     PathVertex& cv = camera[t - 1];
     const std::span<const PathVertex> camera_part = std::span(camera).first(t);
-    if (s == 0) return emitted(scene, camera, t);
+    if (s == 0) return emitted(scene, camera, t, wavelengths);
     if (cv.environment || !joinable(cv)) return {};
     const Vec3 wo = direction_to(cv, camera[t - 2]);
     if (s == 1) {
@@ -154,7 +163,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       lv.delta_light = ls->is_delta;
       lv.pdf_fwd = light_origin_density(scene, lv);
       const float w = strategy_weight(scene, {&lv, 1}, camera_part, 1, t, heuristic_);
-      return cv.beta * f * ls->Li * (w / (choice->pmf * ls->pdf));
+      const Color Li = wavelengths ? lift_illuminant(ls->Li, *wavelengths) : ls->Li;
+      return cv.beta * f * Li * (w / (choice->pmf * ls->pdf));
     }
     const PathVertex& lv = light[s - 1];
     if (!joinable(lv)) return {};
@@ -171,7 +181,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
 
   // Strategy (0, t): the camera subpath's last vertex is on an emitter.
   // Each environment emitter is a light of its own, weighed on its own.
-  Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t) const {
+  Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t, const Wavelengths* wavelengths) const {
     PathVertex& cv = camera[t - 1];
     const std::span<const PathVertex> camera_part = std::span(camera).first(t);
     // The strategy weight takes the place of the MIS weight against next-event estimation.
@@ -179,7 +189,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     Color sum;
     const auto add = [&](const Emitter& emitter, Color Le, float) {
       cv.emitter = &emitter;
-      sum += cv.beta * Le * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
+      const Color L = wavelengths ? lift_illuminant(Le, *wavelengths) : Le;
+      sum += cv.beta * L * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
     };
     if (cv.environment)
       emission_from_environment(scene, cv.w_env, unweighted, {}, add);

@@ -1,12 +1,13 @@
 #include "integrators/bidirectional/camera_connection.h"
 
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 #include "core/transport/shadow_transmittance.h"
 
 namespace caustica {
 
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<const PathVertex> light, int s,
-                                                  Sampler& sampler) {
+                                                  Sampler& sampler, const Wavelengths* wavelengths) {
   const PathVertex& v = light[s - 1];
   const Vec2 u_lens = scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f);
   if (v.environment || v.delta_light) return std::nullopt;
@@ -14,7 +15,8 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   if (!ws || !(ws->pdf > 0)) return std::nullopt;
   Color f;
   if (v.kind == PathVertex::Kind::Light) {
-    f = v.emitter->L(v.si, ws->wi) * abs_dot(v.si.ng, ws->wi);
+    const Color Le = v.emitter->L(v.si, ws->wi);
+    f = (wavelengths ? lift_illuminant(Le, *wavelengths) : Le) * abs_dot(v.si.ng, ws->wi);
   } else {
     if (!joinable(v)) return std::nullopt;
     f = scattering(v, direction_to(v, light[s - 2]), ws->wi);

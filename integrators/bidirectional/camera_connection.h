@@ -20,8 +20,9 @@ struct CameraConnection {
 // Connects light[s-1] to the camera: none when the camera cannot see it or
 // it sends nothing toward the camera. Delta-position lights and the
 // environment are never seen directly, as with camera rays. The sampler
-// gives a lens sample only if the camera has a lens.
+// gives a lens sample only if the camera has a lens. With `wavelengths`
+// (spectral mode) the value is at them.
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<const PathVertex> light, int s,
-                                                  Sampler& sampler);
+                                                  Sampler& sampler, const Wavelengths* wavelengths = nullptr);
 
 }  // namespace caustica

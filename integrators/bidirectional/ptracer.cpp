@@ -15,12 +15,14 @@
 //
 //   <integrator type="ptracer"><integer name="max_depth" value="8"/></integrator>
 
+#include <optional>
 #include <vector>
 
 #include "core/registry/properties.h"
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
+#include "core/spectral/wavelengths.h"
 #include "integrators/bidirectional/camera_connection.h"
 #include "integrators/bidirectional/subpath.h"
 
@@ -36,13 +38,19 @@ class ParticleTracer final : public LightPathIntegrator {
     std::fill(out.begin(), out.end(), 0.0f);
     sampler.start_sample(SampleKey::light_path(id.pixel), id.index, seed);
     thread_local std::vector<PathVertex> light;
-    trace_light_subpath(scene, sampler, settings_, light);
+    // In spectral mode the light path draws its wavelengths first.
+    std::optional<Wavelengths> w;
+    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
+    const Wavelengths* wavelengths = w ? &*w : nullptr;
+    trace_light_subpath(scene, sampler, settings_, light, wavelengths);
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
-      if (const auto c = connect_to_camera(scene, light, s, sampler)) splats.add(c->raster, c->value);
+      if (const auto c = connect_to_camera(scene, light, s, sampler, wavelengths))
+        splats.add(c->raster, w ? spectral_to_rgb(c->value, *w) : c->value);
     return 1;
   }
 
   bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("ptracer: light paths joined to the camera") +

@@ -1,6 +1,7 @@
 #include "integrators/bidirectional/subpath.h"
 
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 #include "core/transport/light_path_start.h"
 #include "core/transport/random_walk.h"
 #include "integrators/bidirectional/path_density.h"
@@ -63,7 +64,7 @@ class SubpathRecorder {
 }  // namespace
 
 void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, const PathSettings& settings,
-                          std::vector<PathVertex>& path) {
+                          std::vector<PathVertex>& path, const Wavelengths* wavelengths) {
   path.clear();
   if (settings.max_depth == 0) return;
   PathVertex& camera = path.emplace_back();
@@ -76,11 +77,11 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
   // the filter's weight being the film's business.
   SubpathRecorder recorder(scene, TransportMode::Radiance, path);
   random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, recorder,
-              camera.medium);
+              camera.medium, wavelengths);
 }
 
 void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
-                         std::vector<PathVertex>& path) {
+                         std::vector<PathVertex>& path, const Wavelengths* wavelengths) {
   path.clear();
   const auto start = start_light_path(scene, sampler);
   if (settings.max_depth == 0 || !start) return;
@@ -102,8 +103,10 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
     light.beta = Color(1 / (start->pmf * start->le.pdf_pos));
   }
   SubpathRecorder recorder(scene, TransportMode::Importance, path);
-  random_walk(scene, start->le.ray, start->beta, TransportMode::Importance, light_walk_limits(settings), sampler,
-              recorder, light.medium);
+  // The emitted weight is Le times a number, so lifting it lifts Le.
+  const Color beta = wavelengths ? lift_illuminant(start->beta, *wavelengths) : start->beta;
+  random_walk(scene, start->le.ray, beta, TransportMode::Importance, light_walk_limits(settings), sampler, recorder,
+              light.medium, wavelengths);
 }
 
 void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {

@@ -1,4 +1,5 @@
-// path in spectral mode against closed forms and against RGB mode:
+// path (and ptracer and bdpt in the furnaces) in spectral mode against
+// closed forms and against RGB mode:
 //  - furnaces: inside a closed sphere that emits RGB white (D65, lifted)
 //    and reflects diffusely with reflectance rho, every ray sees the
 //    radiance Le / (1 - rho(l)) at each wavelength: grey 2 for rho = 0.5,
@@ -35,7 +36,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr int kChecks = 2 * 3 + 16;
+constexpr int kChecks = 2 * 3 + 16 + 2 * 2;
 const double kAlpha = test::sidak_alpha(0.001, kChecks);
 
 void make_spectral(const LoadedScene& scene) {
@@ -44,9 +45,11 @@ void make_spectral(const LoadedScene& scene) {
   scene->set_features(f);
 }
 
-std::string furnace(const std::string& rho, const std::string& integrator = "path") {
-  return "<scene version='3.0.0'><integrator type='" + integrator +
-         "'/><sensor type='perspective'><float name='fov' value='70'/><sampler type='independent'/>"
+std::string furnace(const std::string& rho, const std::string& integrator = "path", int max_depth = -1) {
+  std::string depth;
+  if (max_depth >= 0) depth.append("<integer name='max_depth' value='").append(std::to_string(max_depth)).append("'/>");
+  return "<scene version='3.0.0'><integrator type='" + integrator + "'>" + depth +
+         "</integrator><sensor type='perspective'><float name='fov' value='70'/><sampler type='independent'/>"
          "<transform name='to_world'><lookat origin='0, 0, 0' target='1, 0.3, 0.2'/></transform>"
          "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/>"
          "<rfilter type='box'/></film></sensor>"
@@ -72,6 +75,21 @@ void expect_image_mean(const LoadedScene& scene, Color expected, uint64_t seed, 
   }
 }
 
+// The colour of Le(l) / (1 - rho(l)), Le being D65 scaled to luminance 1,
+// by 1 nm quadrature from the table's spectrum for rho.
+Color coloured_furnace_radiance(std::array<float, 3> rho_rgb) {
+  const SigmoidSpectrum rho = RgbSpectrumTable::built().lookup(rho_rgb);
+  SampledSpectrum d65, radiance;
+  for (int nm = kCieFirstNm; nm <= kCieLastNm; ++nm) {
+    const double e = cie_table_at(kCieD65, nm);
+    d65.nm.push_back(nm);
+    d65.values.push_back(e);
+    radiance.nm.push_back(nm);
+    radiance.values.push_back(e / (1 - rho(nm)));
+  }
+  return spectrum_to_rgb(radiance) * (1 / spectrum_to_rgb(d65).luminance());
+}
+
 TEST(SpectralPath, GreyFurnaceHoldsTwo) {
   const auto scene = test::scene_from_xml(furnace("0.5"));
   make_spectral(scene);
@@ -81,20 +99,47 @@ TEST(SpectralPath, GreyFurnaceHoldsTwo) {
 TEST(SpectralPath, ColouredFurnaceHoldsItsSpectrumsColour) {
   const auto scene = test::scene_from_xml(furnace("0.7, 0.3, 0.2"));
   make_spectral(scene);
-  // Le(l) / (1 - rho(l)), Le being D65 scaled to luminance 1: its colour
-  // with D65's own Y dividing out.
-  const SigmoidSpectrum rho = RgbSpectrumTable::built().lookup({0.7f, 0.3f, 0.2f});
-  SampledSpectrum d65, radiance;
-  for (int nm = kCieFirstNm; nm <= kCieLastNm; ++nm) {
-    const double e = cie_table_at(kCieD65, nm);
-    d65.nm.push_back(nm);
-    d65.values.push_back(e);
-    radiance.nm.push_back(nm);
-    radiance.values.push_back(e / (1 - rho(nm)));
-  }
-  const float d65_y = spectrum_to_rgb(d65).luminance();
-  expect_image_mean(scene, spectrum_to_rgb(radiance) * (1 / d65_y), 2, "coloured");
+  expect_image_mean(scene, coloured_furnace_radiance({0.7f, 0.3f, 0.2f}), 2, "coloured");
 }
+
+// Light tracing and bdpt in the same furnaces: their splats leave no
+// per-pixel variance, so the image mean (over pixels and channels) comes
+// from independent runs.
+class SpectralLightPaths : public testing::TestWithParam<const char*> {};
+
+TEST_P(SpectralLightPaths, FurnacesHoldTheirRadiance) {
+  const auto expect_mean = [&](const std::string& rho, double expected, uint64_t seed, int max_depth = -1) {
+    const auto scene = test::scene_from_xml(furnace(rho, GetParam(), max_depth));
+    make_spectral(scene);
+    const int runs = 8;
+    uint64_t non_finite = 0;
+    const auto e = test::estimate_regions(scene, {{{0, 0}, {16, 16}}}, 16, runs, seed, &non_finite)[0];
+    EXPECT_EQ(non_finite, 0u);
+    EXPECT_LT(std::abs(e.mean - expected), test::two_sided_t_critical(kAlpha, runs - 1) * e.standard_error + 1e-4)
+        << GetParam() << ", reflectance " << rho << ": " << e.mean << " +- " << e.standard_error << ", expected "
+        << expected;
+  };
+  expect_mean("0.5", 2, 50);
+  const Color coloured = coloured_furnace_radiance({0.7f, 0.3f, 0.2f});
+  expect_mean("0.7, 0.3, 0.2", (coloured.r + coloured.g + coloured.b) / 3, 60);
+}
+
+TEST(SpectralLightPaths, LightTracingSeesTheEmitterWhite) {
+  // The emitter joined to the lens directly (max_depth 1) shows white. Its
+  // splats' colour varies with their wavelengths: over 64 spp the image's
+  // red-to-blue ratio spread by 0.02 across seeds, so a bound of 0.15 is
+  // beyond 7 of those; a flat spectrum in D65's place would give
+  // equal-energy's 1.33.
+  const auto scene = test::scene_from_xml(furnace("0.5", "ptracer", 1));
+  make_spectral(scene);
+  const auto img = test::render_scene(scene, 64, 80).resolve();
+  double sum[3] = {0, 0, 0};
+  for (size_t i = 0; i < img.size(); ++i) sum[i % 3] += img[i];
+  EXPECT_NEAR(sum[0] / sum[2], 1, 0.15);
+  EXPECT_NEAR(sum[1] / sum[2], 1, 0.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, SpectralLightPaths, testing::Values("ptracer", "bdpt"), test::scene_test_name);
 
 TEST(SpectralPath, DirectLightAgreesWithRgbUnderAWhiteLight) {
   const std::string xml =
@@ -147,11 +192,11 @@ std::string render_error(const LoadedScene& scene) {
 }
 
 TEST(SpectralPath, WhatCannotBeRenderedSpectrallyIsRefused) {
-  const auto bdpt = test::scene_from_xml(furnace("0.5", "bdpt"), "furnace.xml");
-  make_spectral(bdpt);
-  EXPECT_THAT(render_error(bdpt),
-              HasSubstr("integrator 'bdpt' does not render with spectral transport (forced by the render settings) "
-                        "yet; render furnace.xml with path, volpath, or in RGB"));
+  const auto direct = test::scene_from_xml(furnace("0.5", "direct"), "furnace.xml");
+  make_spectral(direct);
+  EXPECT_THAT(render_error(direct),
+              HasSubstr("integrator 'direct' does not render with spectral transport (forced by the render settings) "
+                        "yet; render furnace.xml with bdpt, path, ptracer, volpath, or in RGB"));
   const auto rgb_only = test::scene_from_xml(
       "<scene version='3.0.0'><shape type='sphere'><bsdf type='test_rgb_only'/></shape>"
       "<shape type='rectangle'><bsdf type='twosided'><bsdf type='test_rgb_only'/></bsdf></shape>"
