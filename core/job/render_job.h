@@ -25,7 +25,8 @@ struct RenderSettings {
   uint64_t seed = 0;
   int threads = 0;   // 0: all cores
   bool aovs = true;  // the first-hit layers, for integrators of radiance (FirstHitLayers)
-  // Spectral or RGB transport: as the scene analysis decides, or forced.
+  // Spectral or RGB transport: as the scene analysis decides, or forced
+  // (which rewrites the loaded scene's analysis, for every job sharing it).
   enum class Transport { AsTheSceneNeeds, Rgb, Spectral } transport = Transport::AsTheSceneNeeds;
   const std::atomic<bool>* stop = nullptr;
 };
