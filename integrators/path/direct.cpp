@@ -4,11 +4,15 @@
 //
 //   <integrator type="direct"><integer name="emitter_samples" value="4"/></integrator>
 
+#include <optional>
+
 #include "core/bsdf/surface_bsdf.h"
 #include "core/registry/properties.h"
 #include "core/render/direct_light.h"
 #include "core/render/pixel_integrator.h"
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
+#include "core/spectral/wavelengths.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 
@@ -27,7 +31,8 @@ class DirectIntegrator;
 // samples, each BSDF sample looking for emission one segment further.
 class DirectLight {
  public:
-  DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings);
+  // With `wavelengths` (spectral mode) L is at them.
+  DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings, const Wavelengths* wavelengths);
   WalkAction at_vertex(const WalkVertex& v);
   void escaped(const WalkEscape& e);
   WalkAction scattered(const BsdfSample&) { return WalkAction::Stop; }
@@ -35,9 +40,12 @@ class DirectLight {
   Color L;
 
  private:
+  Color emitted(Color Le) const { return wavelengths_ ? lift_illuminant(Le, *wavelengths_) : Le; }
+
   const Scene& scene_;
   Sampler& sampler_;
   const DirectIntegrator& settings_;
+  const Wavelengths* wavelengths_;
 };
 
 class DirectIntegrator final : public RadianceIntegrator {
@@ -50,11 +58,17 @@ class DirectIntegrator final : public RadianceIntegrator {
       throw props.error("bsdf_samples", "emitter_samples + bsdf_samples must be positive");
   }
 
+  // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    DirectLight direct(scene, sampler, *this);
-    random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct);
-    return direct.L;
+    std::optional<Wavelengths> w;
+    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
+    const Wavelengths* wavelengths = w ? &*w : nullptr;
+    DirectLight direct(scene, sampler, *this, wavelengths);
+    random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct, nullptr, wavelengths);
+    return w ? spectral_to_rgb(direct.L, *w) : direct.L;
   }
+
+  bool renders_spectral() const override { return true; }
 
  private:
   friend class DirectLight;
@@ -62,19 +76,21 @@ class DirectIntegrator final : public RadianceIntegrator {
   bool hide_emitters_;
 };
 
-DirectLight::DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings)
-    : scene_(scene), sampler_(sampler), settings_(settings) {}
+DirectLight::DirectLight(const Scene& scene, Sampler& sampler, const DirectIntegrator& settings,
+                         const Wavelengths* wavelengths)
+    : scene_(scene), sampler_(sampler), settings_(settings), wavelengths_(wavelengths) {}
 
 WalkAction DirectLight::at_vertex(const WalkVertex& v) {
   if (!settings_.hide_emitters_)
     emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                        [&](const Emitter&, Color Le, float w) { L += v.beta * Le * w; });
+                        [&](const Emitter&, Color Le, float w) { L += v.beta * emitted(Le) * w; });
   const MisCounts counts{float(settings_.emitter_samples_), float(settings_.bsdf_samples_)};
   if (v.bsdf.lobes() & ~kDelta)
     for (int64_t i = 0; i < settings_.emitter_samples_; ++i) {
       const float u_select = sampler_.next_1d();
       const Vec2 u_light = sampler_.next_2d();
-      L += sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, counts.n_light, counts.n_bsdf) *
+      L += sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, counts.n_light, counts.n_bsdf,
+                               wavelengths_) *
            (1 / counts.n_light);
     }
   for (int64_t i = 0; i < settings_.bsdf_samples_; ++i) {
@@ -83,7 +99,7 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
     if (!bs) continue;
     const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / (bs->pdf * counts.n_bsdf));
     const Arrival arrival = arrival_from(v.si, *bs);
-    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * Le * w; };
+    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * emitted(Le) * w; };
     if (const auto hit = scene_.intersect(v.si.spawn(bs->wi)))
       emission_at_surface(scene_, *hit, -bs->wi, arrival, counts, add);
     else
@@ -95,7 +111,7 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
 void DirectLight::escaped(const WalkEscape& e) {
   if (!settings_.hide_emitters_)
     emission_from_environment(scene_, e.ray.d, e.arrival, {},
-                              [&](const Emitter&, Color Le, float w) { L += e.beta * Le * w; });
+                              [&](const Emitter&, Color Le, float w) { L += e.beta * emitted(Le) * w; });
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// path (and ptracer and bdpt in the furnaces) in spectral mode against
+// path (and direct, ptracer and bdpt in the furnaces) in spectral mode against
 // closed forms and against RGB mode:
 //  - furnaces: inside a closed sphere that emits RGB white (D65, lifted)
 //    and reflects diffusely with reflectance rho, every ray sees the
@@ -36,7 +36,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr int kChecks = 2 * 3 + 16 + 2 * 2;
+constexpr int kChecks = 3 * 3 + 16 + 2 * 2;
 const double kAlpha = test::sidak_alpha(0.001, kChecks);
 
 void make_spectral(const LoadedScene& scene) {
@@ -94,6 +94,13 @@ TEST(SpectralPath, GreyFurnaceHoldsTwo) {
   const auto scene = test::scene_from_xml(furnace("0.5"));
   make_spectral(scene);
   expect_image_mean(scene, Color(2), 1, "grey");
+}
+
+TEST(SpectralPath, DirectSeesOneBounceInTheFurnace) {
+  // The emitter seen, plus its light reflected once: 1 + 0.5.
+  const auto scene = test::scene_from_xml(furnace("0.5", "direct"));
+  make_spectral(scene);
+  expect_image_mean(scene, Color(1.5f), 7, "direct");
 }
 
 TEST(SpectralPath, ColouredFurnaceHoldsItsSpectrumsColour) {
@@ -192,11 +199,11 @@ std::string render_error(const LoadedScene& scene) {
 }
 
 TEST(SpectralPath, WhatCannotBeRenderedSpectrallyIsRefused) {
-  const auto direct = test::scene_from_xml(furnace("0.5", "direct"), "furnace.xml");
-  make_spectral(direct);
-  EXPECT_THAT(render_error(direct),
-              HasSubstr("integrator 'direct' does not render with spectral transport (forced by the render settings) "
-                        "yet; render furnace.xml with bdpt, path, ptracer, volpath, or in RGB"));
+  const auto photon = test::scene_from_xml(furnace("0.5", "photon"), "furnace.xml");
+  make_spectral(photon);
+  EXPECT_THAT(render_error(photon),
+              HasSubstr("integrator 'photon' does not render with spectral transport (forced by the render settings) "
+                        "yet; render furnace.xml with bdpt, direct, path, ptracer, volpath, or in RGB"));
   const auto rgb_only = test::scene_from_xml(
       "<scene version='3.0.0'><shape type='sphere'><bsdf type='test_rgb_only'/></shape>"
       "<shape type='rectangle'><bsdf type='twosided'><bsdf type='test_rgb_only'/></bsdf></shape>"
