@@ -21,8 +21,7 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
   const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
   if (f.is_black()) return {};
   if (scene.occluded(shadow_ray(si, ls))) return {};
-  const Color Li = wavelengths ? lift_illuminant(ls.Li, *wavelengths) : ls.Li;
-  return f * Li * (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
+  return f * emission_for(ls.Li, wavelengths) * (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

@@ -23,4 +23,8 @@ Color lift_unbounded(Color rgb, const Wavelengths& w);
 // (spectral_to_rgb) to itself.
 Color lift_illuminant(Color rgb, const Wavelengths& w);
 
+// Emission as a path reads it: lifted at its wavelengths in spectral mode,
+// the RGB itself in RGB mode (no wavelengths).
+inline Color emission_for(Color rgb, const Wavelengths* w) { return w ? lift_illuminant(rgb, *w) : rgb; }
+
 }  // namespace caustica

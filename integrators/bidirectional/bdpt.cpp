@@ -21,7 +21,6 @@
 //
 //   <integrator type="bdpt"><integer name="strategy_layers" value="4"/></integrator>
 
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -30,6 +29,7 @@
 #include "core/render/direct_light.h"
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "core/spectral/rgb_lift.h"
 #include "core/transport/emission.h"
@@ -85,10 +85,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     const CameraSample cs = sample_camera_ray(scene, sampler, id.pixel, id.index, seed);
     // In spectral mode both subpaths carry the wavelengths the camera ray
     // draws, and every strategy's value converts to RGB as it is added.
-    std::optional<Wavelengths> w;
-    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
-    const Wavelengths* wavelengths = w ? &*w : nullptr;
-    const auto rgb = [&](Color c) { return w ? spectral_to_rgb(c, *w) : c; };
+    const SampleWavelengths w(scene, sampler);
+    const Wavelengths* wavelengths = w.get();
     trace_camera_subpath(scene, cs.ray, sampler, settings_, camera, wavelengths);
     compute_densities(scene, camera);
     trace_light_subpath(scene, sampler, settings_, light, wavelengths);
@@ -104,11 +102,11 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
           const auto c = connect_to_camera(scene, light, s, sampler, wavelengths);
           if (!c) continue;
           const Color value =
-              rgb(c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_));
+              w.to_rgb(c->value * strategy_weight(scene, std::span(light).first(s), {&c->camera, 1}, s, 1, heuristic_));
           splats.add(c->raster, value);
           if (layer) splats.add(c->raster, value, layer_channel(s, t));
         } else {
-          const Color value = rgb(connect(scene, light, s, camera, t, sampler, wavelengths));
+          const Color value = w.to_rgb(connect(scene, light, s, camera, t, sampler, wavelengths));
           add(out, 0, value);
           if (layer) add(out, layer_channel(s, t), value);
         }
@@ -163,8 +161,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       lv.delta_light = ls->is_delta;
       lv.pdf_fwd = light_origin_density(scene, lv);
       const float w = strategy_weight(scene, {&lv, 1}, camera_part, 1, t, heuristic_);
-      const Color Li = wavelengths ? lift_illuminant(ls->Li, *wavelengths) : ls->Li;
-      return cv.beta * f * Li * (w / (choice->pmf * ls->pdf));
+      return cv.beta * f * emission_for(ls->Li, wavelengths) * (w / (choice->pmf * ls->pdf));
     }
     const PathVertex& lv = light[s - 1];
     if (!joinable(lv)) return {};
@@ -189,8 +186,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     Color sum;
     const auto add = [&](const Emitter& emitter, Color Le, float) {
       cv.emitter = &emitter;
-      const Color L = wavelengths ? lift_illuminant(Le, *wavelengths) : Le;
-      sum += cv.beta * L * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
+      sum += cv.beta * emission_for(Le, wavelengths) * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
     };
     if (cv.environment)
       emission_from_environment(scene, cv.w_env, unweighted, {}, add);

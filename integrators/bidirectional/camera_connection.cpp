@@ -15,8 +15,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   if (!ws || !(ws->pdf > 0)) return std::nullopt;
   Color f;
   if (v.kind == PathVertex::Kind::Light) {
-    const Color Le = v.emitter->L(v.si, ws->wi);
-    f = (wavelengths ? lift_illuminant(Le, *wavelengths) : Le) * abs_dot(v.si.ng, ws->wi);
+    f = emission_for(v.emitter->L(v.si, ws->wi), wavelengths) * abs_dot(v.si.ng, ws->wi);
   } else {
     if (!joinable(v)) return std::nullopt;
     f = scattering(v, direction_to(v, light[s - 2]), ws->wi);

@@ -15,14 +15,13 @@
 //
 //   <integrator type="ptracer"><integer name="max_depth" value="8"/></integrator>
 
-#include <optional>
 #include <vector>
 
 #include "core/registry/properties.h"
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
-#include "core/spectral/wavelengths.h"
 #include "integrators/bidirectional/camera_connection.h"
 #include "integrators/bidirectional/subpath.h"
 
@@ -39,13 +38,11 @@ class ParticleTracer final : public LightPathIntegrator {
     sampler.start_sample(SampleKey::light_path(id.pixel), id.index, seed);
     thread_local std::vector<PathVertex> light;
     // In spectral mode the light path draws its wavelengths first.
-    std::optional<Wavelengths> w;
-    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
-    const Wavelengths* wavelengths = w ? &*w : nullptr;
-    trace_light_subpath(scene, sampler, settings_, light, wavelengths);
+    const SampleWavelengths w(scene, sampler);
+    trace_light_subpath(scene, sampler, settings_, light, w.get());
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
-      if (const auto c = connect_to_camera(scene, light, s, sampler, wavelengths))
-        splats.add(c->raster, w ? spectral_to_rgb(c->value, *w) : c->value);
+      if (const auto c = connect_to_camera(scene, light, s, sampler, w.get()))
+        splats.add(c->raster, w.to_rgb(c->value));
     return 1;
   }
 

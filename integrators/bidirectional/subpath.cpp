@@ -104,9 +104,8 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   }
   SubpathRecorder recorder(scene, TransportMode::Importance, path);
   // The emitted weight is Le times a number, so lifting it lifts Le.
-  const Color beta = wavelengths ? lift_illuminant(start->beta, *wavelengths) : start->beta;
-  random_walk(scene, start->le.ray, beta, TransportMode::Importance, light_walk_limits(settings), sampler, recorder,
-              light.medium, wavelengths);
+  random_walk(scene, start->le.ray, emission_for(start->beta, wavelengths), TransportMode::Importance,
+              light_walk_limits(settings), sampler, recorder, light.medium, wavelengths);
 }
 
 void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {

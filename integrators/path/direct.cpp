@@ -4,15 +4,13 @@
 //
 //   <integrator type="direct"><integer name="emitter_samples" value="4"/></integrator>
 
-#include <optional>
-
 #include "core/bsdf/surface_bsdf.h"
 #include "core/registry/properties.h"
 #include "core/render/direct_light.h"
 #include "core/render/pixel_integrator.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "core/spectral/rgb_lift.h"
-#include "core/spectral/wavelengths.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 
@@ -40,8 +38,6 @@ class DirectLight {
   Color L;
 
  private:
-  Color emitted(Color Le) const { return wavelengths_ ? lift_illuminant(Le, *wavelengths_) : Le; }
-
   const Scene& scene_;
   Sampler& sampler_;
   const DirectIntegrator& settings_;
@@ -60,12 +56,10 @@ class DirectIntegrator final : public RadianceIntegrator {
 
   // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    std::optional<Wavelengths> w;
-    if (scene.features().spectral) w = sample_wavelengths(sampler.next_1d());
-    const Wavelengths* wavelengths = w ? &*w : nullptr;
-    DirectLight direct(scene, sampler, *this, wavelengths);
-    random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct, nullptr, wavelengths);
-    return w ? spectral_to_rgb(direct.L, *w) : direct.L;
+    const SampleWavelengths w(scene, sampler);
+    DirectLight direct(scene, sampler, *this, w.get());
+    random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct, nullptr, w.get());
+    return w.to_rgb(direct.L);
   }
 
   bool renders_spectral() const override { return true; }
@@ -83,7 +77,7 @@ DirectLight::DirectLight(const Scene& scene, Sampler& sampler, const DirectInteg
 WalkAction DirectLight::at_vertex(const WalkVertex& v) {
   if (!settings_.hide_emitters_)
     emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                        [&](const Emitter&, Color Le, float w) { L += v.beta * emitted(Le) * w; });
+                        [&](const Emitter&, Color Le, float w) { L += v.beta * emission_for(Le, wavelengths_) * w; });
   const MisCounts counts{float(settings_.emitter_samples_), float(settings_.bsdf_samples_)};
   if (v.bsdf.lobes() & ~kDelta)
     for (int64_t i = 0; i < settings_.emitter_samples_; ++i) {
@@ -99,7 +93,7 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
     if (!bs) continue;
     const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / (bs->pdf * counts.n_bsdf));
     const Arrival arrival = arrival_from(v.si, *bs);
-    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * emitted(Le) * w; };
+    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * emission_for(Le, wavelengths_) * w; };
     if (const auto hit = scene_.intersect(v.si.spawn(bs->wi)))
       emission_at_surface(scene_, *hit, -bs->wi, arrival, counts, add);
     else
@@ -110,8 +104,9 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
 
 void DirectLight::escaped(const WalkEscape& e) {
   if (!settings_.hide_emitters_)
-    emission_from_environment(scene_, e.ray.d, e.arrival, {},
-                              [&](const Emitter&, Color Le, float w) { L += e.beta * emitted(Le) * w; });
+    emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter&, Color Le, float w) {
+      L += e.beta * emission_for(Le, wavelengths_) * w;
+    });
 }
 
 }  // namespace

@@ -13,8 +13,8 @@
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
 #include "core/render/pixel_integrator.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
-#include "core/spectral/wavelengths.h"
 #include "integrators/path/path_tracing.h"
 
 namespace caustica {
@@ -26,9 +26,8 @@ class PathIntegrator : public RadianceIntegrator {
 
   // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    if (!scene.features().spectral) return trace_path(scene, ray, sampler, settings_);
-    const Wavelengths w = sample_wavelengths(sampler.next_1d());
-    return spectral_to_rgb(trace_path(scene, ray, sampler, settings_, nullptr, &w), w);
+    const SampleWavelengths w(scene, sampler);
+    return w.to_rgb(trace_path(scene, ray, sampler, settings_, nullptr, w.get()));
   }
 
   bool renders_media() const override { return true; }

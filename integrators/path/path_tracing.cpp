@@ -23,7 +23,7 @@ class PathRadiance {
   WalkAction at_vertex(const WalkVertex& v) {
     if (shows_emission(v.segments))
       emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                          [&](const Emitter&, Color Le, float w) { L += v.beta * emitted(Le) * w; });
+                          [&](const Emitter&, Color Le, float w) { L += v.beta * emission_for(Le, wavelengths_) * w; });
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
@@ -40,8 +40,9 @@ class PathRadiance {
 
   void escaped(const WalkEscape& e) {
     if (shows_emission(e.segments))
-      emission_from_environment(scene_, e.ray.d, e.arrival, {},
-                                [&](const Emitter&, Color Le, float w) { L += e.beta * emitted(Le) * w; });
+      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter&, Color Le, float w) {
+        L += e.beta * emission_for(Le, wavelengths_) * w;
+      });
   }
 
   WalkAction at_medium_vertex(const MediumVertex& v) requires kMedia {
@@ -80,9 +81,6 @@ class PathRadiance {
   bool shows_emission(int64_t segments) const {
     return (segments > 1 || !settings_.hide_emitters) && !(gathered_ && delta_bounces_since_ > 0);
   }
-
-  // An emitter's radiance, at the path's wavelengths in spectral mode.
-  Color emitted(Color Le) const { return wavelengths_ ? lift_illuminant(Le, *wavelengths_) : Le; }
 
   const Scene& scene_;
   Sampler& sampler_;
