@@ -34,6 +34,7 @@ class BlendBsdf final : public Bsdf {
   uint32_t lobes() const override { return first_->lobes() | second_->lobes(); }
   bool reads_tangents() const override { return first_->reads_tangents() || second_->reads_tangents(); }
   bool renders_spectral() const override { return first_->renders_spectral() && second_->renders_spectral(); }
+  bool disperses() const override { return first_->disperses() || second_->disperses(); }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override { return eval_with(weight(ctx), ctx, wo, wi); }
 

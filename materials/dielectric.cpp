@@ -18,6 +18,15 @@
 // Indices equal (int_ior = ext_ior) make an index-matched, invisible
 // interface: nothing is reflected and light passes straight through.
 //
+// `dispersion` in place of int_ior makes the inside's index vary with
+// wavelength (a prism's spectrum, a diamond's fire): the scene is then
+// rendered spectrally, each bounce refracting by the index at the path's
+// hero wavelength, the path going on at that wavelength alone.
+//
+//   <bsdf type="dielectric">
+//       <string name="dispersion" value="sellmeier: 1.0396, 0.0060, 0.2318, 0.0200, 1.0105, 103.56"/>
+//   </bsdf>
+//
 //   <bsdf type="dielectric">
 //       <string name="int_ior" value="water"/>
 //       <float name="ext_ior" value="1.0"/>
@@ -40,10 +49,11 @@ class DielectricBsdf final : public DeltaBsdf {
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
   bool renders_spectral() const override { return true; }
+  bool disperses() const override { return interface_.disperses(); }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2) const override {
     if (wo.z == 0) return std::nullopt;
-    const DielectricFresnel fr = fresnel(wo.z);
+    const DielectricFresnel fr = fresnel(wo.z, interface_.eta_at(ctx));
     if (u_lobe < fr.F) {
       const Vec3 wi(-wo.x, -wo.y, wo.z);
       return BsdfSample{wi, reflectance_at(*interface_.reflectance, ctx) * (fr.F / std::abs(wi.z)), fr.F,
@@ -59,16 +69,16 @@ class DielectricBsdf final : public DeltaBsdf {
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    const float F = fresnel(wo.z).F;
+    const float F = fresnel(wo.z, interface_.eta_at(ctx)).F;
     return reflectance_at(*interface_.reflectance, ctx) * F + reflectance_at(*interface_.transmittance, ctx) * (1 - F);
   }
 
  private:
   // Fresnel at the macro surface; an index-matched interface is exactly
   // transparent (the general formula leaves rounding residue there).
-  DielectricFresnel fresnel(float cos_o) const {
-    if (interface_.eta == 1) return {0, -cos_o, 1, 1};
-    return fresnel_dielectric(cos_o, interface_.eta);
+  static DielectricFresnel fresnel(float cos_o, float eta) {
+    if (eta == 1) return {0, -cos_o, 1, 1};
+    return fresnel_dielectric(cos_o, eta);
   }
 
   DielectricInterface interface_;
@@ -81,6 +91,7 @@ CAUSTICA_REGISTER_PLUGIN(
     {{"int_ior", ParamType::Ior, "bk7",
       "index of refraction inside (below the normal); a number or a name such as water"},
      {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+     dispersion_param(),
      {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light (1 is physical)"},
      {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light (1 is physical)"}},
     {});

@@ -36,6 +36,7 @@ class MaskBsdf final : public Bsdf {
   uint32_t lobes() const override { return nested_->lobes() | kDeltaTransmission; }
   bool reads_tangents() const override { return nested_->reads_tangents(); }
   bool renders_spectral() const override { return nested_->renders_spectral(); }
+  bool disperses() const override { return nested_->disperses(); }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     const float a = opacity(ctx);

@@ -23,7 +23,8 @@
 // specular_reflectance F + specular_transmittance (1 - F) at wo.
 //
 // Equal indices make the facets invisible: light passes straight through as
-// a delta transmission lobe, as for `dielectric`.
+// a delta transmission lobe, as for `dielectric`. `dispersion` is read as
+// `dielectric` reads it: every value at the path's hero wavelength.
 //
 // `distribution` is beckmann or ggx; alpha is the roughness (the root mean
 // square slope of the facets for beckmann). alpha_u and alpha_v make it
@@ -56,18 +57,21 @@ class RoughDielectricBsdf final : public Bsdf {
 
   bool reads_tangents() const override { return false; }
   bool renders_spectral() const override { return true; }
+  bool disperses() const override { return interface_.disperses(); }
   uint32_t lobes() const override {
     return index_matched() ? kDeltaTransmission : kGlossyReflection | kGlossyTransmission;
   }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const auto m = half_vector(wo, wi);
-    return m ? evaluate(roughness_.at(ctx.uv), ctx, wo, wi, *m).f : Color();
+    const float eta = interface_.eta_at(ctx);
+    const auto m = half_vector(wo, wi, eta);
+    return m ? evaluate(roughness_.at(ctx.uv), ctx, eta, wo, wi, *m).f : Color();
   }
 
   float pdf(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
-    const auto m = half_vector(wo, wi);
-    return m ? evaluate(roughness_.at(ctx.uv), ctx, wo, wi, *m).pdf : 0;
+    const float eta = interface_.eta_at(ctx);
+    const auto m = half_vector(wo, wi, eta);
+    return m ? evaluate(roughness_.at(ctx.uv), ctx, eta, wo, wi, *m).pdf : 0;
   }
 
   std::optional<BsdfSample> sample(const BsdfContext& ctx, Vec3 wo, float u_lobe, Vec2 u) const override {
@@ -80,7 +84,8 @@ class RoughDielectricBsdf final : public Bsdf {
     const Vec3 m = sample_visible_ ? distribution.sample(wo.z > 0 ? wo : -wo, u) : distribution.sample_D(u);
     const float wo_m = dot(wo, m);
     if (wo_m * wo.z <= 0) return std::nullopt;  // a back-facing facet (Beckmann samples those)
-    const DielectricFresnel fr = fresnel_dielectric(wo_m, interface_.eta);
+    const float eta = interface_.eta_at(ctx);
+    const DielectricFresnel fr = fresnel_dielectric(wo_m, eta);
     Vec3 wi;
     uint32_t lobe;
     if (u_lobe < fr.F) {
@@ -92,13 +97,13 @@ class RoughDielectricBsdf final : public Bsdf {
       lobe = kGlossyTransmission;
       if (wi.z * wo.z >= 0) return std::nullopt;
     }
-    const Evaluation e = evaluate(distribution, ctx, wo, wi, m);
+    const Evaluation e = evaluate(distribution, ctx, eta, wo, wi, m);
     if (!(e.pdf > 0)) return std::nullopt;
     return BsdfSample{wi, e.f, e.pdf, lobe, lobe == kGlossyTransmission ? fr.eta_it : 1.0f};
   }
 
   Color albedo(const BsdfContext& ctx, Vec3 wo) const override {
-    const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, interface_.eta).F;
+    const float F = index_matched() ? 0 : fresnel_dielectric(wo.z, interface_.eta_at(ctx)).F;
     return reflectance_at(*interface_.reflectance, ctx) * F + reflectance_at(*interface_.transmittance, ctx) * (1 - F);
   }
 
@@ -108,15 +113,16 @@ class RoughDielectricBsdf final : public Bsdf {
     float pdf = 0;
   };
 
-  bool index_matched() const { return interface_.eta == 1; }
+  bool index_matched() const { return !interface_.disperses() && interface_.eta == 1; }
 
   // The facet normal that turns wo into wi, by reflection or refraction,
-  // oriented to the outside; none where no facet seen from both directions does.
-  std::optional<Vec3> half_vector(Vec3 wo, Vec3 wi) const {
+  // oriented to the outside; none where no facet seen from both directions
+  // does. eta is the relative index (inside over outside).
+  std::optional<Vec3> half_vector(Vec3 wo, Vec3 wi, float eta) const {
     if (wo.z == 0 || wi.z == 0 || index_matched()) return std::nullopt;
     const bool reflection = wo.z * wi.z > 0;
     // For refraction eta_o wo + eta_i wi is along the facet normal (Snell).
-    Vec3 m = reflection ? wo + wi : wo + wi * (wo.z > 0 ? interface_.eta : 1 / interface_.eta);
+    Vec3 m = reflection ? wo + wi : wo + wi * (wo.z > 0 ? eta : 1 / eta);
     const float len2 = squared_length(m);
     if (!(len2 > 0)) return std::nullopt;
     m = m / std::sqrt(len2);
@@ -126,15 +132,15 @@ class RoughDielectricBsdf final : public Bsdf {
   }
 
   // f and pdf of the pair (wo, wi) through facet normal m (m.z > 0), with
-  // the distribution at the point.
-  Evaluation evaluate(const MicrofacetDistribution& distribution, const BsdfContext& ctx, Vec3 wo, Vec3 wi,
-                      Vec3 m) const {
+  // the distribution at the point and the relative index eta_inside.
+  Evaluation evaluate(const MicrofacetDistribution& distribution, const BsdfContext& ctx, float eta_inside, Vec3 wo,
+                      Vec3 wi, Vec3 m) const {
     const float D = distribution.D(m), G = distribution.G(wo, wi, m);
     const float wo_m = dot(wo, m), wi_m = dot(wi, m);
     // Density of the facet normal as sampled from wo's side.
     const float pdf_m = sample_visible_ ? distribution.pdf(wo.z > 0 ? wo : -wo, m) : distribution.pdf_D(m);
     if (!(D > 0) || !(pdf_m > 0)) return {};
-    const float F = fresnel_dielectric(wo_m, interface_.eta).F;
+    const float F = fresnel_dielectric(wo_m, eta_inside).F;
     const float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
     if (wo.z * wi.z > 0) {
       // Jacobian of the reflected direction: d(omega_m) / d(omega_i) = 1 / (4 |wi.m|).
@@ -142,7 +148,7 @@ class RoughDielectricBsdf final : public Bsdf {
       return {reflectance_at(*interface_.reflectance, ctx) * f, F * pdf_m / (4 * std::abs(wo_m))};
     }
     if (F >= 1) return {};
-    const float eta = wo.z > 0 ? interface_.eta : 1 / interface_.eta;  // index on wi's side over wo's
+    const float eta = wo.z > 0 ? eta_inside : 1 / eta_inside;  // index on wi's side over wo's
     const float denom = wo_m + eta * wi_m;
     // Jacobian of the refracted direction: eta^2 |wi.m| / (wo.m + eta wi.m)^2.
     const float jacobian = eta * eta * std::abs(wi_m) / (denom * denom);
@@ -164,6 +170,7 @@ std::vector<ParamSpec> params() {
            {{"int_ior", ParamType::Ior, "bk7",
              "index of refraction inside (below the normal); a number or a name such as water"},
             {"ext_ior", ParamType::Ior, "air", "index of refraction outside"},
+            dispersion_param(),
             {"specular_reflectance", ParamType::Texture, "1", "scales the reflected light (1 is physical)"},
             {"specular_transmittance", ParamType::Texture, "1", "scales the transmitted light (1 is physical)"},
             {"sample_visible", ParamType::Boolean, "true", "sample only the facet normals visible from wo"}});

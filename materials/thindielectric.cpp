@@ -29,7 +29,7 @@ namespace {
 
 class ThinDielectricBsdf final : public DeltaBsdf {
  public:
-  explicit ThinDielectricBsdf(const Properties& props) : interface_(props) {}
+  explicit ThinDielectricBsdf(const Properties& props) : interface_(props, false) {}
 
   uint32_t lobes() const override { return kDeltaReflection | kDeltaTransmission; }
   bool renders_spectral() const override { return true; }

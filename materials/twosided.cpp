@@ -33,6 +33,7 @@ class TwoSidedBsdf final : public Bsdf {
   uint32_t lobes() const override { return front_->lobes() | back_->lobes(); }
   bool reads_tangents() const override { return front_->reads_tangents() || back_->reads_tangents(); }
   bool renders_spectral() const override { return front_->renders_spectral() && back_->renders_spectral(); }
+  bool disperses() const override { return front_->disperses() || back_->disperses(); }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     return wo.z > 0 ? front_->eval(ctx, wo, wi) : back_->eval(ctx, flip(wo), flip(wi));

@@ -77,6 +77,10 @@ class Bsdf : public Plugin {
   // Whether it returns values at the context's wavelengths in spectral
   // mode; a scene holding one that does not is not rendered spectrally.
   virtual bool renders_spectral() const { return false; }
+  // Whether where it sends light depends on the wavelength (a dispersive
+  // dielectric): a spectral path meeting it goes on at its hero wavelength
+  // alone, and the scene is rendered spectrally.
+  virtual bool disperses() const { return false; }
 };
 
 }  // namespace caustica

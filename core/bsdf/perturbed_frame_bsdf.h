@@ -22,6 +22,7 @@ class PerturbedFrameBsdf : public Bsdf {
 
   uint32_t lobes() const override { return nested_->lobes(); }
   bool renders_spectral() const override { return nested_->renders_spectral(); }
+  bool disperses() const override { return nested_->disperses(); }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     const Frame f = frame(ctx);

@@ -34,6 +34,7 @@ class SurfaceBsdf {
   std::optional<BsdfSample> sample(Vec3 wo_world, float u_lobe, Vec2 u) const;
   Color albedo(Vec3 wo_world) const { return bsdf_->albedo(ctx_, frame_.to_local(wo_world)); }
   uint32_t lobes() const { return bsdf_->lobes(); }
+  bool disperses() const { return bsdf_->disperses(); }
 
  private:
   float shading_correction(Vec3 wo_world, Vec3 wi_world) const;

@@ -18,7 +18,7 @@ class SampleWavelengths {
   }
 
   // Null in RGB mode.
-  const Wavelengths* get() const { return w_ ? &*w_ : nullptr; }
+  Wavelengths* get() { return w_ ? &*w_ : nullptr; }
   // An estimate at them in Rec.709; in RGB mode the estimate itself.
   Color to_rgb(Color c) const { return w_ ? spectral_to_rgb(c, *w_) : c; }
 

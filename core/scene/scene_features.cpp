@@ -1,5 +1,6 @@
 #include "core/scene/scene_features.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -116,7 +117,15 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   for (const auto& s : scene.shapes())
     if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
   f.rgb_only_materials.assign(rgb_only.begin(), rgb_only.end());
-  f.spectral_reason = "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
+  const auto dispersive = std::find_if(scene.shapes().begin(), scene.shapes().end(),
+                                       [](const auto& s) { return s->bsdf() && s->bsdf()->disperses(); });
+  if (dispersive != scene.shapes().end()) {
+    f.spectral = true;
+    f.spectral_reason = "a dispersive dielectric: " + (*dispersive)->kind();
+  } else {
+    f.spectral_reason =
+        "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
+  }
   return f;
 }
 

@@ -1,7 +1,10 @@
 #include "core/spectral/dispersion.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace caustica {
@@ -31,6 +34,7 @@ const std::vector<NamedGlass>& named_glasses() {
         {1.726177391e-1, 1.821153936e-2},
         {2.086189578e-2, 2.620722293e-2},
         {1.130748688e-1, 1.069792721e1}}},
+      {"sf11", {{1.73759695, 0.013188707}, {0.313747346, 0.0623068142}, {1.89878101, 155.23629}}},
   };
   return glasses;
 }
@@ -71,6 +75,32 @@ Dispersion Dispersion::named(const std::string& name) {
     known += (known.empty() ? "" : ", ") + std::string(g.name);
   }
   throw std::invalid_argument("no dispersive material is named '" + name + "' (known: " + known + ")");
+}
+
+Dispersion Dispersion::parse(const std::string& text) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) return named(text);
+  const std::string model = text.substr(0, colon);
+  std::string list = text.substr(colon + 1);
+  std::replace(list.begin(), list.end(), ',', ' ');
+  std::vector<double> numbers;
+  std::istringstream in(list);
+  for (std::string item; in >> item;) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (*end != '\0') throw std::invalid_argument("cannot read '" + item + "' as a number");
+    numbers.push_back(v);
+  }
+  if (model == "cauchy") return cauchy(std::move(numbers));
+  if (model == "sellmeier") {
+    if (numbers.empty() || numbers.size() % 2 != 0)
+      throw std::invalid_argument("Sellmeier's model takes pairs B, C (" + std::to_string(numbers.size()) +
+                                  " numbers given)");
+    std::vector<std::pair<double, double>> terms;
+    for (size_t i = 0; i < numbers.size(); i += 2) terms.emplace_back(numbers[i], numbers[i + 1]);
+    return sellmeier(std::move(terms));
+  }
+  throw std::invalid_argument("unknown dispersion model '" + model + "' (known: cauchy, sellmeier)");
 }
 
 double Dispersion::ior(double nm) const {

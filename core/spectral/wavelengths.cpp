@@ -50,6 +50,14 @@ Wavelengths sample_wavelengths(float u) {
   return w;
 }
 
+void terminate_secondaries(Wavelengths& w) {
+  if (secondaries_terminated(w)) return;
+  w.pdf[0] /= 3;
+  w.pdf[1] = w.pdf[2] = 0;
+}
+
+bool secondaries_terminated(const Wavelengths& w) { return w.pdf[1] == 0 && w.pdf[2] == 0; }
+
 std::array<double, 3> spectral_to_xyz(Color values, const Wavelengths& w) {
   std::array<double, 3> xyz{0, 0, 0};
   for (int i = 0; i < 3; ++i) {

@@ -16,6 +16,18 @@ struct Wavelengths {
   std::array<float, 3> pdf{};  // each one's density per nm
 };
 
+// Where the wavelengths' paths part (a dispersive refraction sends each its
+// own way) only the hero's is followed: the others' densities become 0 and
+// the hero's a third, so that the estimators below weigh its value three
+// times and ignore the others', in every estimate the sample makes from
+// then on. That stays unbiased: whether a path meets dispersion does not
+// depend on the wavelengths, and the hero alone follows the visible density.
+void terminate_secondaries(Wavelengths& w);
+bool secondaries_terminated(const Wavelengths& w);
+// A path's values with the secondaries' set to zero, which they count for
+// once terminated (so that roulette does not keep a path alive for them).
+inline Color hero_only(Color c) { return {c.r, 0, 0}; }
+
 // The range spectral mode samples, that of the CIE tables.
 inline constexpr float kMinWavelengthNm = 360, kMaxWavelengthNm = 830;
 

@@ -90,7 +90,7 @@ concept MediumVisitor = requires(Visitor& v, const MediumVertex& mv, const Phase
 
 template <bool kMedia, class Visitor>
 void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
-                   Sampler& sampler, Visitor& visitor, const Medium* medium, const Wavelengths* wavelengths) {
+                   Sampler& sampler, Visitor& visitor, const Medium* medium, Wavelengths* wavelengths) {
   if (limits.max_segments == 0) return;
   Color throughput(1);
   float eta_scale = 1;
@@ -140,6 +140,11 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       return;
     }
     const SurfaceBsdf bsdf(*si->shape->bsdf(), *si, mode, wavelengths);
+    if (wavelengths && bsdf.disperses() && !secondaries_terminated(*wavelengths)) {
+      terminate_secondaries(*wavelengths);
+      beta = hero_only(beta);
+      throughput = hero_only(throughput);
+    }
     const Vec3 wo = -ray.d;
     if (visitor.at_vertex(WalkVertex{*si, bsdf, wo, beta, segments, last, arrival, medium}) == WalkAction::Stop || last)
       return;
@@ -166,11 +171,13 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
 // Walks from `ray`, which carries `beta` and starts in `medium`, until the
 // path escapes, a visitor stops it, the BSDF absorbs it, roulette ends it,
 // or it reaches limits.max_segments. With `wavelengths` (spectral mode) the
-// BSDFs return values at them, and beta holds the path's values there.
+// BSDFs return values at them, and beta holds the path's values there; a
+// dispersive surface terminates the secondary wavelengths (in the shared
+// `wavelengths`, so that whatever else the sample adds follows the hero).
 template <class Visitor>
 void random_walk(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
                  Sampler& sampler, Visitor& visitor, const Medium* medium = nullptr,
-                 const Wavelengths* wavelengths = nullptr) {
+                 Wavelengths* wavelengths = nullptr) {
   if constexpr (MediumVisitor<Visitor>) {
     if (scene.features().medium_walk) {
       walk_segments<true>(scene, ray, beta, mode, limits, sampler, visitor, medium, wavelengths);

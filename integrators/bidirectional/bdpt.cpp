@@ -85,8 +85,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     const CameraSample cs = sample_camera_ray(scene, sampler, id.pixel, id.index, seed);
     // In spectral mode both subpaths carry the wavelengths the camera ray
     // draws, and every strategy's value converts to RGB as it is added.
-    const SampleWavelengths w(scene, sampler);
-    const Wavelengths* wavelengths = w.get();
+    SampleWavelengths w(scene, sampler);
+    Wavelengths* wavelengths = w.get();
     trace_camera_subpath(scene, cs.ray, sampler, settings_, camera, wavelengths);
     compute_densities(scene, camera);
     trace_light_subpath(scene, sampler, settings_, light, wavelengths);

@@ -38,7 +38,7 @@ class ParticleTracer final : public LightPathIntegrator {
     sampler.start_sample(SampleKey::light_path(id.pixel), id.index, seed);
     thread_local std::vector<PathVertex> light;
     // In spectral mode the light path draws its wavelengths first.
-    const SampleWavelengths w(scene, sampler);
+    SampleWavelengths w(scene, sampler);
     trace_light_subpath(scene, sampler, settings_, light, w.get());
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
       if (const auto c = connect_to_camera(scene, light, s, sampler, w.get()))

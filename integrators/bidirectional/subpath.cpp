@@ -64,7 +64,7 @@ class SubpathRecorder {
 }  // namespace
 
 void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, const PathSettings& settings,
-                          std::vector<PathVertex>& path, const Wavelengths* wavelengths) {
+                          std::vector<PathVertex>& path, Wavelengths* wavelengths) {
   path.clear();
   if (settings.max_depth == 0) return;
   PathVertex& camera = path.emplace_back();
@@ -81,7 +81,7 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
 }
 
 void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
-                         std::vector<PathVertex>& path, const Wavelengths* wavelengths) {
+                         std::vector<PathVertex>& path, Wavelengths* wavelengths) {
   path.clear();
   const auto start = start_light_path(scene, sampler);
   if (settings.max_depth == 0 || !start) return;

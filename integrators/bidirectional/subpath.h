@@ -19,14 +19,14 @@ class Scene;
 // With `wavelengths` (spectral mode, here and below) the vertices' BSDFs
 // and weights are at them.
 void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, const PathSettings& settings,
-                          std::vector<PathVertex>& path, const Wavelengths* wavelengths = nullptr);
+                          std::vector<PathVertex>& path, Wavelengths* wavelengths = nullptr);
 
 // Replaces `path` with a light subpath: an emitter chosen by power, a ray
 // it emits, and the surfaces that ray's walk hits (BSDFs in importance
 // mode). Empty when the scene has no light to start from. It has at most
 // max_depth vertices, the light's included: its last still joins the camera.
 void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
-                         std::vector<PathVertex>& path, const Wavelengths* wavelengths = nullptr);
+                         std::vector<PathVertex>& path, Wavelengths* wavelengths = nullptr);
 
 // Sets pdf_fwd and pdf_rev of every vertex from the geometry, the way the
 // walks sampled them: a vertex after a delta lobe gets 0 in that direction.

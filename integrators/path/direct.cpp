@@ -56,7 +56,7 @@ class DirectIntegrator final : public RadianceIntegrator {
 
   // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    const SampleWavelengths w(scene, sampler);
+    SampleWavelengths w(scene, sampler);
     DirectLight direct(scene, sampler, *this, w.get());
     random_walk(scene, ray, Color(1), TransportMode::Radiance, {1, {}}, sampler, direct, nullptr, w.get());
     return w.to_rgb(direct.L);

@@ -26,7 +26,7 @@ class PathIntegrator : public RadianceIntegrator {
 
   // In spectral mode each camera ray draws its wavelengths first.
   Color Li(const Scene& scene, Ray ray, Sampler& sampler) const override {
-    const SampleWavelengths w(scene, sampler);
+    SampleWavelengths w(scene, sampler);
     return w.to_rgb(trace_path(scene, ray, sampler, settings_, nullptr, w.get()));
   }
 

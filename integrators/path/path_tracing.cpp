@@ -94,7 +94,7 @@ class PathRadiance {
 }  // namespace
 
 Color trace_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
-                 const CausticEstimator* caustics, const Wavelengths* wavelengths) {
+                 const CausticEstimator* caustics, Wavelengths* wavelengths) {
   if (scene.features().medium_walk) {
     PathRadiance<true> radiance(scene, sampler, settings, caustics, wavelengths);
     random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance,

@@ -36,6 +36,6 @@ class CausticEstimator {
 // With `wavelengths` (spectral mode) the result is the path's radiance at
 // them, channel i at wavelength i.
 Color trace_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
-                 const CausticEstimator* caustics = nullptr, const Wavelengths* wavelengths = nullptr);
+                 const CausticEstimator* caustics = nullptr, Wavelengths* wavelengths = nullptr);
 
 }  // namespace caustica
