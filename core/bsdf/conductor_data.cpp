@@ -1,8 +1,11 @@
 #include "core/bsdf/conductor_data.h"
 
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "core/registry/properties.h"
+#include "core/spectral/metal_ior_tables.h"
 
 namespace caustica {
 
@@ -10,23 +13,43 @@ namespace {
 
 struct NamedConductor {
   const char* name;
-  ConductorIor ior;
+  Color eta, k;
 };
 
 // RGB approximations of measured optical constants (eta, k), at about 650,
 // 550 and 450 nm.
 const NamedConductor kConductors[] = {
-    {"Ag", {{0.155f, 0.117f, 0.138f}, {4.828f, 3.122f, 2.147f}}},
-    {"Al", {{1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}}},
-    {"Au", {{0.143f, 0.374f, 1.442f}, {3.983f, 2.385f, 1.603f}}},
-    {"Cu", {{0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}}},
+    {"Ag", {0.155f, 0.117f, 0.138f}, {4.828f, 3.122f, 2.147f}},
+    {"Al", {1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}},
+    {"Au", {0.143f, 0.374f, 1.442f}, {3.983f, 2.385f, 1.603f}},
+    {"Cu", {0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}},
 };
+
+// A metal's published eta and k as two spectra.
+std::pair<std::shared_ptr<const SampledSpectrum>, std::shared_ptr<const SampledSpectrum>> measured(
+    const std::string& symbol) {
+  SampledSpectrum eta, k;
+  for (const MetalIorSample& s : metal_ior_table(symbol)) {
+    eta.nm.push_back(s.nm);
+    eta.values.push_back(s.eta);
+    k.nm.push_back(s.nm);
+    k.values.push_back(s.k);
+  }
+  return {std::make_shared<const SampledSpectrum>(std::move(eta)),
+          std::make_shared<const SampledSpectrum>(std::move(k))};
+}
 
 }  // namespace
 
 std::optional<ConductorIor> named_conductor(const std::string& name) {
   for (const auto& c : kConductors)
-    if (name == c.name) return c.ior;
+    if (name == c.name) {
+      ConductorIor ior;
+      ior.eta = c.eta;
+      ior.k = c.k;
+      std::tie(ior.eta_spectrum, ior.k_spectrum) = measured(name);
+      return ior;
+    }
   return std::nullopt;
 }
 
@@ -41,11 +64,22 @@ namespace {
 ConductorIor absolute_ior(const Properties& props) {
   const std::string material = props.get_string("material");
   if (material == "none") {
-    const ConductorIor ior{props.get_color("eta"), props.get_color("k")};
+    ConductorIor ior;
+    ior.eta = props.get_color("eta");
+    ior.k = props.get_color("k");
     for (int c = 0; c < 3; ++c) {
       if (!(ior.eta[c] >= 0)) throw props.error("eta", "must not be negative");
       if (!(ior.k[c] >= 0)) throw props.error("k", "must not be negative");
     }
+    ior.eta_spectrum = props.spectrum("eta");
+    ior.k_spectrum = props.spectrum("k");
+    if (!ior.eta_spectrum != !ior.k_spectrum)
+      throw props.error(ior.eta_spectrum ? "k" : "eta", "give eta and k both as spectra, or neither");
+    for (const auto& [name, s] : {std::pair{"eta", ior.eta_spectrum.get()}, std::pair{"k", ior.k_spectrum.get()}})
+      if (s)
+        for (double v : s->values)
+          if (!(v >= 0)) throw props.error(name, "must not be negative");
+    ior.scene_spectra = ior.measured();
     return ior;
   }
   if (props.has("eta") || props.has("k"))
@@ -60,17 +94,20 @@ ConductorIor absolute_ior(const Properties& props) {
 }  // namespace
 
 ConductorIor conductor_ior(const Properties& props) {
-  const ConductorIor ior = absolute_ior(props);
+  ConductorIor ior = absolute_ior(props);
   const float outside = props.get_float("ext_eta");
   if (!(outside > 0 && std::isfinite(outside))) throw props.error("ext_eta", "must be positive");
-  return {ior.eta / outside, ior.k / outside};
+  ior.eta = ior.eta / outside;
+  ior.k = ior.k / outside;
+  ior.outside = outside;
+  return ior;
 }
 
 std::vector<ParamSpec> conductor_ior_params() {
   return {
       {"material", ParamType::String, "none", "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
-      {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel"},
-      {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel"},
+      {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel or as a spectrum"},
+      {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel or as a spectrum"},
       {"ext_eta", ParamType::Float, "1", "index of the outside, which eta and k are divided by (Mitsuba 0.x)"}};
 }
 

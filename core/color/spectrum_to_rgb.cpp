@@ -11,15 +11,6 @@
 namespace caustica {
 namespace {
 
-double spectrum_at(const SampledSpectrum& s, double nm) {
-  if (s.nm.empty() || nm < s.nm.front() || nm > s.nm.back()) return 0;
-  if (s.nm.size() == 1) return s.values.front();
-  size_t i = 1;
-  while (i + 1 < s.nm.size() && s.nm[i] < nm) ++i;
-  const double t = (nm - s.nm[i - 1]) / (s.nm[i] - s.nm[i - 1]);
-  return s.values[i - 1] * (1 - t) + s.values[i] * t;
-}
-
 double parse_number(std::string_view text, const std::string& what) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
@@ -97,7 +88,7 @@ SampledSpectrum blackbody(double kelvin) {
 Color spectrum_to_rgb(const SampledSpectrum& spectrum) {
   double xyz[3] = {0, 0, 0}, norm = 0;
   for (int nm = kCieFirstNm; nm <= kCieLastNm; ++nm) {
-    const double s = spectrum_at(spectrum, nm);
+    const double s = spectrum.at(nm);
     xyz[0] += s * cie_table_at(kCieX, nm);
     xyz[1] += s * cie_table_at(kCieY, nm);
     xyz[2] += s * cie_table_at(kCieZ, nm);

@@ -5,15 +5,9 @@
 #include <vector>
 
 #include "core/math/color.h"
+#include "core/math/sampled_spectrum.h"
 
 namespace caustica {
-
-// A spectrum given at wavelengths (nm, increasing), linear in between and
-// zero outside, as a scene's <spectrum value="400:0.34, 404:0.45, ..."/>
-// or a .spd file gives it.
-struct SampledSpectrum {
-  std::vector<double> nm, values;
-};
 
 // Parses "nm:value, nm:value, ..."; throws std::invalid_argument saying
 // what is wrong (a malformed pair, wavelengths not increasing, a value that

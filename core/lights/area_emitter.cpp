@@ -21,7 +21,9 @@ namespace {
 class AreaEmitter final : public Emitter {
  public:
   explicit AreaEmitter(const Properties& props)
-      : radiance_(read_nonnegative_texture(props, "radiance")), where_(props.where()) {}
+      : radiance_(read_nonnegative_texture(props, "radiance")), where_(props.where()) {
+    set_measured_emission(props.spectrum("radiance"));
+  }
 
   void attach_shape(const Shape* shape) override {
     if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");

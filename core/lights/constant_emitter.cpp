@@ -14,7 +14,9 @@ namespace {
 
 class ConstantEmitter final : public Emitter {
  public:
-  explicit ConstantEmitter(const Properties& props) : radiance_(read_emission(props, "radiance")) {}
+  explicit ConstantEmitter(const Properties& props) : radiance_(read_emission(props, "radiance")) {
+    set_measured_emission(props.spectrum("radiance"));
+  }
 
   void prepare(const Bounds3& bounds) override { disk_.fit(bounds); }
 

@@ -21,6 +21,7 @@ namespace {
 class DirectionalEmitter final : public Emitter {
  public:
   explicit DirectionalEmitter(const Properties& props) : irradiance_(read_emission(props, "irradiance")) {
+    set_measured_emission(props.spectrum("irradiance"));
     if (props.has("direction") && props.has("to_world"))
       throw props.error("direction", "give either direction or to_world, not both");
     const Vec3 d =

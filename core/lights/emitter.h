@@ -4,16 +4,41 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/color/spectrum_to_rgb.h"
 #include "core/geometry/bounds.h"
 #include "core/geometry/interaction.h"
 #include "core/geometry/reference_point.h"
 #include "core/math/color.h"
+#include "core/math/sampled_spectrum.h"
 #include "core/registry/plugin.h"
+#include "core/spectral/wavelengths.h"
 
 namespace caustica {
 
 class Medium;
 class Shape;
+
+// An emitter's light given as a spectrum, with the colour RGB transport
+// takes for it.
+class MeasuredEmission {
+ public:
+  explicit MeasuredEmission(std::shared_ptr<const SampledSpectrum> spectrum)
+      : spectrum_(std::move(spectrum)), rgb_(spectrum_to_rgb(*spectrum_)) {
+    channel_ = rgb_.g >= rgb_.r && rgb_.g >= rgb_.b ? 1 : (rgb_.r >= rgb_.b ? 0 : 2);
+  }
+  // The spectrum times the number that makes its colour `rgb` (read off
+  // the colour's largest channel).
+  Color at(Color rgb, const Wavelengths& w) const {
+    const float scale = rgb_[channel_] > 0 ? rgb[channel_] / rgb_[channel_] : 0;
+    return spectrum_at(*spectrum_, w) * scale;
+  }
+  const SampledSpectrum& spectrum() const { return *spectrum_; }
+
+ private:
+  std::shared_ptr<const SampledSpectrum> spectrum_;
+  Color rgb_;
+  int channel_ = 1;
+};
 
 // Incident light sampled toward a reference point.
 struct LiSample {
@@ -69,8 +94,21 @@ class Emitter : public Plugin {
   const Medium* medium() const { return medium_.get(); }
   void set_medium(std::shared_ptr<const Medium> medium) { medium_ = std::move(medium); }
 
+  // Where the scene gave the emitter's light as a spectrum: its radiance
+  // (intensity, irradiance) is then that spectrum times a number, and the
+  // colours the emitter returns are the spectrum's colour times it.
+  const MeasuredEmission* measured_emission() const { return measured_ ? &*measured_ : nullptr; }
+
+ protected:
+  // Called by an emitter's constructor with the spectrum its emission
+  // parameter was given as (null: an RGB colour).
+  void set_measured_emission(std::shared_ptr<const SampledSpectrum> spectrum) {
+    if (spectrum) measured_ = MeasuredEmission(std::move(spectrum));
+  }
+
  private:
   std::shared_ptr<const Medium> medium_;
+  std::optional<MeasuredEmission> measured_;
 };
 
 }  // namespace caustica

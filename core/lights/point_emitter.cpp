@@ -18,7 +18,9 @@ class PointEmitter final : public Emitter {
  public:
   explicit PointEmitter(const Properties& props)
       : intensity_(read_emission(props, "intensity")),
-        position_(props.get_transform("to_world").point(props.get_point("position"))) {}
+        position_(props.get_transform("to_world").point(props.get_point("position"))) {
+    set_measured_emission(props.spectrum("intensity"));
+  }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
     Vec3 wi = position_ - ref.p;

@@ -31,6 +31,7 @@ class SpotEmitter final : public Emitter {
         to_world_(props.get_transform("to_world")),
         to_local_(to_world_.inverse()),
         position_(to_world_.point(Vec3d())) {
+    set_measured_emission(props.spectrum("intensity"));
     const float cutoff = props.get_float("cutoff_angle");
     if (!(cutoff > 0 && cutoff <= 180)) throw props.error("cutoff_angle", "must be in (0, 180] degrees");
     const float beam = props.has("beam_width") ? props.get_float("beam_width") : cutoff * 0.75f;

@@ -99,8 +99,9 @@ class Instantiator {
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
   std::vector<SourceLocation> emitter_places;      // where each of `emitters` was written
   std::vector<std::string> warnings;
-  GivenValues integrator_values;  // what the last <integrator> built was given
-  int textures = 0;               // texture plugins built, for the scene features
+  GivenValues integrator_values;       // what the last <integrator> built was given
+  int textures = 0;                    // texture plugins built, for the scene features
+  std::vector<GivenSpectrum> spectra;  // colours given as spectra, for the scene features
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -128,7 +129,7 @@ class Instantiator {
     props.set_resolver(&resolver_);
     const bool group = node.tag == "shape" && type == "shapegroup";
     in_group_ += group;
-    for (const XmlNode& child : node.children) add_child(props, child);
+    for (const XmlNode& child : node.children) add_child(props, child, node.tag);
     in_group_ -= group;
 
     std::shared_ptr<Plugin> plugin;
@@ -154,9 +155,12 @@ class Instantiator {
     return {node.tag, plugin};
   }
 
-  void add_child(Properties& props, const XmlNode& child) {
+  void add_child(Properties& props, const XmlNode& child, const std::string& owner) {
     if (child.tag == "spectrum" || child.tag == "blackbody") {
-      props.set(required_attribute(child, "name"), parse_spectrum_element(child, resolver_));
+      const std::string name = required_attribute(child, "name");
+      PropertyValue v = parse_spectrum_element(child, resolver_);
+      if (v.spectrum) spectra.push_back({child.where, owner, name, v.spectrum});
+      props.set(name, std::move(v));
     } else if (const auto kind = kValueTags.find(child.tag); kind != kValueTags.end()) {
       props.set(required_attribute(child, "name"), parse_value_element(child, kind->second));
     } else if (child.tag == "transform") {
@@ -280,7 +284,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);
-  scene->set_features(analyze_scene(*scene, inst.textures > 0));
+  scene->set_features(analyze_scene(*scene, inst.textures > 0, inst.spectra));
   if (auto warning = clip_warning(scene->sensor().clip_planes(), scene->bounds()))
     inst.warnings.push_back(source + ": " + *warning);
   inst.warnings.insert(inst.warnings.begin(), upgrade_notes.begin(), upgrade_notes.end());

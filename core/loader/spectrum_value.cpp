@@ -1,5 +1,6 @@
 #include "core/loader/spectrum_value.h"
 
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -15,11 +16,19 @@ double number(const XmlNode& node, const std::string& text, const char* what) {
   return n[0];
 }
 
-PropertyValue rgb(const XmlNode& node, Color c) { return {ValueKind::Rgb, c, node.where}; }
+// The colour RGB transport takes for a spectrum, with the spectrum. A
+// saturated spectrum (a narrow band) lies outside the Rec.709 gamut; RGB
+// transport takes its colour's non-negative part.
+PropertyValue spectral(const XmlNode& node, SampledSpectrum s) {
+  const Color c = spectrum_to_rgb(s).clamp(0, std::numeric_limits<float>::infinity());
+  return {ValueKind::Rgb, c, node.where, std::make_shared<const SampledSpectrum>(std::move(s))};
+}
 
 PropertyValue from_blackbody(const XmlNode& node, double kelvin, double scale) {
   if (!(kelvin > 0)) throw SceneError(node.where, "a black body's temperature must be positive");
-  return rgb(node, spectrum_to_rgb(blackbody(kelvin)) * float(scale));
+  SampledSpectrum s = blackbody(kelvin);
+  for (double& v : s.values) v *= scale;
+  return spectral(node, std::move(s));
 }
 
 }  // namespace
@@ -49,12 +58,12 @@ PropertyValue parse_spectrum_element(const XmlNode& node, const FileResolver& fi
   node.check_attributes({"name", "value", "filename"});
   try {
     if (const std::string* file = node.attribute("filename")) {
-      return rgb(node, spectrum_to_rgb(read_spd_file(files.resolve(*file, node.where.file))));
+      return spectral(node, read_spd_file(files.resolve(*file, node.where.file)));
     }
     const std::string* text = node.attribute("value");
     if (!text) throw SceneError(node.where, "<spectrum> needs a 'value' or a 'filename' attribute");
     if (text->find(':') == std::string::npos) return parse_value_text(ValueKind::Rgb, *text, node.where);
-    return rgb(node, spectrum_to_rgb(parse_spectrum_pairs(*text)));
+    return spectral(node, parse_spectrum_pairs(*text));
   } catch (const std::invalid_argument& e) {
     throw SceneError(node.where, std::string("<spectrum>: ") + e.what());
   }

@@ -27,6 +27,9 @@ struct Color {
   // Rec.709 luminance weights.
   constexpr float luminance() const { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
   bool is_finite() const { return std::isfinite(r) && std::isfinite(g) && std::isfinite(b); }
+  Color clamp(float lo, float hi) const {
+    return {std::clamp(r, lo, hi), std::clamp(g, lo, hi), std::clamp(b, lo, hi)};
+  }
 };
 
 constexpr Color operator*(float s, Color c) { return c * s; }

@@ -34,6 +34,11 @@ class Properties {
   const std::vector<std::pair<std::string, PropertyValue>>& values() const { return values_; }
   const SourceLocation& where() const { return where_; }
   bool has(const std::string& name) const { return find(name) != nullptr; }
+  // The spectrum a colour parameter was given as, if it was (null otherwise).
+  std::shared_ptr<const SampledSpectrum> spectrum(const std::string& name) const {
+    const PropertyValue* v = find(name);
+    return v ? v->spectrum : nullptr;
+  }
 
   // Each getter records the value it returns as the parameter's effective
   // value (effective_parameters()).

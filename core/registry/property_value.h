@@ -8,6 +8,7 @@
 
 #include "core/errors/scene_error.h"
 #include "core/math/color.h"
+#include "core/math/sampled_spectrum.h"
 #include "core/math/transform.h"
 #include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
@@ -25,9 +26,18 @@ struct ObjectValue {
 
 // One named value given to a plugin, with where it was written.
 struct PropertyValue {
+  using Value = std::variant<bool, int64_t, double, std::string, Color, Vec3d, Transform, ObjectValue>;
+  PropertyValue() = default;
+  PropertyValue(ValueKind k, Value v, SourceLocation w, std::shared_ptr<const SampledSpectrum> s = nullptr)
+      : kind(k), value(std::move(v)), where(std::move(w)), spectrum(std::move(s)) {}
+
   ValueKind kind = ValueKind::Float;
-  std::variant<bool, int64_t, double, std::string, Color, Vec3d, Transform, ObjectValue> value;
+  Value value;
   SourceLocation where;
+  // For a colour given as a spectrum (sampled, from a file, a black body):
+  // the spectrum itself, which spectral transport reads in place of the
+  // colour RGB transport takes for it.
+  std::shared_ptr<const SampledSpectrum> spectrum;
 };
 
 // The numbers of a list such as "1, 2, 3" or "1 0 0 0 ..." (commas and/or

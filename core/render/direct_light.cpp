@@ -1,7 +1,7 @@
 #include "core/render/direct_light.h"
 
+#include "core/lights/spectral_emission.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 
 namespace caustica {
 
@@ -10,7 +10,7 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
   if (!choice) return std::nullopt;
   const auto ls = choice->emitter->sample_Li(ref, u_light);
   if (!ls || ls->pdf <= 0 || ls->Li.is_black()) return std::nullopt;
-  return ChosenLight{*ls, choice->pmf * ls->pdf};
+  return ChosenLight{*ls, choice->pmf * ls->pdf, choice->emitter};
 }
 
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
@@ -21,7 +21,8 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
   const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
   if (f.is_black()) return {};
   if (scene.occluded(shadow_ray(si, ls))) return {};
-  return f * emission_for(ls.Li, wavelengths) * (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
+  return f * emission_for(*light->emitter, ls.Li, wavelengths) *
+         (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

@@ -17,6 +17,7 @@ class Scene;
 struct ChosenLight {
   LiSample ls;
   float pdf = 0;  // selection probability times ls.pdf
+  const Emitter* emitter = nullptr;
 
   // The MIS weight of this sample against sampling the scattering function
   // (density pdf_scatter of the same direction), n_light light samples

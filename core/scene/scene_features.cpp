@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
 #include "core/bsdf/bsdf.h"
 #include "core/media/medium.h"
 #include "core/scene/scene.h"
+#include "core/spectral/rgb_lift.h"
 
 namespace caustica {
 
@@ -79,7 +81,43 @@ void count_media(const Scene& scene, SceneFeatures& f) {
 
 }  // namespace
 
-SceneFeatures analyze_scene(const Scene& scene, bool textures) {
+namespace {
+
+// Why the scene calls for spectral transport, or "".
+std::string spectral_content(const Scene& scene, const std::vector<GivenSpectrum>& spectra) {
+  for (const auto& s : scene.shapes())
+    if (s->bsdf() && s->bsdf()->disperses()) return "a dispersive dielectric: " + s->kind();
+  for (const GivenSpectrum& g : spectra) {
+    const std::string given = g.where.str() + ": " + g.owner + " " + g.parameter + " given as a spectrum";
+    if (g.owner == "bsdf" && (g.parameter == "eta" || g.parameter == "k"))
+      return "a conductor whose index is measured: " + given;
+    if (g.owner != "bsdf" && g.owner != "emitter" && g.owner != "texture") continue;
+    const double misfit = lift_misfit(*g.spectrum, g.owner == "emitter");
+    if (misfit > kSpectrumMisfitThreshold) {
+      char percent[16];
+      std::snprintf(percent, sizeof percent, "%.0f%%", 100 * misfit);
+      return given + " that RGB would misrepresent (" + percent + " away from its colour's smooth spectrum)";
+    }
+  }
+  return "";
+}
+
+void decide_spectral(const Scene& scene, const std::vector<GivenSpectrum>& spectra, SceneFeatures& f) {
+  const std::string content = spectral_content(scene, spectra);
+  if (content.empty()) {
+    f.spectral_reason =
+        "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
+  } else if (f.media > 0) {
+    f.spectral_reason = "the scene holds " + content + ", but its media are not rendered spectrally yet";
+  } else {
+    f.spectral = true;
+    f.spectral_reason = content;
+  }
+}
+
+}  // namespace
+
+SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector<GivenSpectrum>& spectra) {
   SceneFeatures f;
   f.textures = textures;
   f.camera = scene.sensor().plugin_name();
@@ -117,15 +155,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures) {
   for (const auto& s : scene.shapes())
     if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
   f.rgb_only_materials.assign(rgb_only.begin(), rgb_only.end());
-  const auto dispersive = std::find_if(scene.shapes().begin(), scene.shapes().end(),
-                                       [](const auto& s) { return s->bsdf() && s->bsdf()->disperses(); });
-  if (dispersive != scene.shapes().end()) {
-    f.spectral = true;
-    f.spectral_reason = "a dispersive dielectric: " + (*dispersive)->kind();
-  } else {
-    f.spectral_reason =
-        "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
-  }
+  decide_spectral(scene, spectra, f);
   return f;
 }
 

@@ -1,8 +1,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "core/errors/scene_error.h"
+#include "core/math/sampled_spectrum.h"
 
 namespace caustica {
 
@@ -37,10 +41,25 @@ struct SceneFeatures {
   std::vector<std::string> rgb_only_materials;
 };
 
+// A colour the scene file gave as a spectrum, for the analysis to weigh.
+struct GivenSpectrum {
+  SourceLocation where;
+  std::string owner;      // the element it was given to: bsdf, emitter, texture, ...
+  std::string parameter;  // its name there
+  std::shared_ptr<const SampledSpectrum> spectrum;
+};
+
+// A spectrum renders spectrally when it lies this far (lift_misfit) from
+// the smooth spectrum of its colour.
+inline constexpr double kSpectrumMisfitThreshold = 0.05;
+
 // Looks at the scene's materials, lights and camera; whether a light
 // reaches a delta surface is decided by shadow rays from 256 points spread
-// over each such surface to every light.
-SceneFeatures analyze_scene(const Scene& scene, bool textures);
+// over each such surface to every light. Spectral transport is chosen for
+// a dispersive dielectric, a conductor whose eta and k are given as
+// spectra, or an emission or reflectance spectrum RGB would misrepresent
+// (among `spectra`); not where media would then refuse to render.
+SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector<GivenSpectrum>& spectra = {});
 
 // Spectral or RGB transport as a render setting decides, in place of the
 // analysis's choice.

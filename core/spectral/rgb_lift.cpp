@@ -1,9 +1,11 @@
 #include "core/spectral/rgb_lift.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/color/cie_tables.h"
 #include "core/color/rgb_spectrum_table.h"
+#include "core/color/spectrum_to_rgb.h"
 
 namespace caustica {
 
@@ -39,6 +41,28 @@ Color lift_unbounded(Color rgb, const Wavelengths& w) {
   if (!(m > 0)) return {};
   const float scale = 2 * m;
   return at_wavelengths(RgbSpectrumTable::built().lookup({rgb.r / scale, rgb.g / scale, rgb.b / scale}), w, scale);
+}
+
+double lift_misfit(const SampledSpectrum& s, bool illuminant) {
+  Color rgb = spectrum_to_rgb(s);
+  if (!illuminant) {
+    SampledSpectrum lit;
+    for (int nm = kCieFirstNm; nm <= kCieLastNm; ++nm) {
+      lit.nm.push_back(nm);
+      lit.values.push_back(s.at(nm) * d65_normalised(nm));
+    }
+    rgb = spectrum_to_rgb(lit);
+  }
+  double difference = 0, total = 0;
+  for (int nm = 400; nm <= 700; ++nm) {
+    Wavelengths w;
+    w.nm = {float(nm), float(nm), float(nm)};
+    const double lifted = (illuminant ? lift_illuminant(rgb, w) : lift_reflectance(rgb, w)).r;
+    const double v = s.at(nm);
+    difference += std::abs(v - lifted);
+    total += std::abs(v);
+  }
+  return total > 0 ? difference / total : 0;
 }
 
 Color lift_illuminant(Color rgb, const Wavelengths& w) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/math/color.h"
+#include "core/math/sampled_spectrum.h"
 #include "core/spectral/wavelengths.h"
 
 namespace caustica {
@@ -23,8 +24,10 @@ Color lift_unbounded(Color rgb, const Wavelengths& w);
 // (spectral_to_rgb) to itself.
 Color lift_illuminant(Color rgb, const Wavelengths& w);
 
-// Emission as a path reads it: lifted at its wavelengths in spectral mode,
-// the RGB itself in RGB mode (no wavelengths).
-inline Color emission_for(Color rgb, const Wavelengths* w) { return w ? lift_illuminant(rgb, *w) : rgb; }
+// How far a spectrum given in a scene lies from the smooth spectra RGB
+// transport stands for: from the illuminant lifted from its colour, or the
+// reflectance lifted from its colour under D65. The integral of their
+// difference's magnitude over that of the spectrum, 400 to 700 nm at 1 nm.
+double lift_misfit(const SampledSpectrum& s, bool illuminant);
 
 }  // namespace caustica

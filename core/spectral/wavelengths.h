@@ -3,6 +3,7 @@
 #include <array>
 
 #include "core/math/color.h"
+#include "core/math/sampled_spectrum.h"
 
 namespace caustica {
 
@@ -42,6 +43,11 @@ float sample_visible_wavelength(float u);
 // u + 1/3 and u + 2/3 (modulo 1) through the same inversion, so that each
 // follows the density above and the three spread over the spectrum.
 Wavelengths sample_wavelengths(float u);
+
+// A spectrum's values at the wavelengths.
+inline Color spectrum_at(const SampledSpectrum& s, const Wavelengths& w) {
+  return {float(s.at(w.nm[0])), float(s.at(w.nm[1])), float(s.at(w.nm[2]))};
+}
 
 // The CIE XYZ a path's spectral radiance `values` (at w) estimates: the
 // average over the wavelengths of value x (x, y, z)(l) / pdf(l), over the

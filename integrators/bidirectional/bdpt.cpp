@@ -24,6 +24,7 @@
 #include <span>
 #include <vector>
 
+#include "core/lights/spectral_emission.h"
 #include "core/registry/properties.h"
 #include "core/render/camera_sample.h"
 #include "core/render/direct_light.h"
@@ -31,7 +32,6 @@
 #include "core/render/path_settings.h"
 #include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 #include "core/transport/emission.h"
 #include "core/transport/shadow_transmittance.h"
 #include "integrators/bidirectional/camera_connection.h"
@@ -161,7 +161,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       lv.delta_light = ls->is_delta;
       lv.pdf_fwd = light_origin_density(scene, lv);
       const float w = strategy_weight(scene, {&lv, 1}, camera_part, 1, t, heuristic_);
-      return cv.beta * f * emission_for(ls->Li, wavelengths) * (w / (choice->pmf * ls->pdf));
+      return cv.beta * f * emission_for(*choice->emitter, ls->Li, wavelengths) * (w / (choice->pmf * ls->pdf));
     }
     const PathVertex& lv = light[s - 1];
     if (!joinable(lv)) return {};
@@ -186,7 +186,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     Color sum;
     const auto add = [&](const Emitter& emitter, Color Le, float) {
       cv.emitter = &emitter;
-      sum += cv.beta * emission_for(Le, wavelengths) * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
+      sum +=
+          cv.beta * emission_for(emitter, Le, wavelengths) * strategy_weight(scene, {}, camera_part, 0, t, heuristic_);
     };
     if (cv.environment)
       emission_from_environment(scene, cv.w_env, unweighted, {}, add);

@@ -1,7 +1,7 @@
 #include "integrators/bidirectional/camera_connection.h"
 
+#include "core/lights/spectral_emission.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 #include "core/transport/shadow_transmittance.h"
 
 namespace caustica {
@@ -15,7 +15,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   if (!ws || !(ws->pdf > 0)) return std::nullopt;
   Color f;
   if (v.kind == PathVertex::Kind::Light) {
-    f = emission_for(v.emitter->L(v.si, ws->wi), wavelengths) * abs_dot(v.si.ng, ws->wi);
+    f = emission_for(*v.emitter, v.emitter->L(v.si, ws->wi), wavelengths) * abs_dot(v.si.ng, ws->wi);
   } else {
     if (!joinable(v)) return std::nullopt;
     f = scattering(v, direction_to(v, light[s - 2]), ws->wi);

@@ -1,7 +1,7 @@
 #include "integrators/bidirectional/subpath.h"
 
+#include "core/lights/spectral_emission.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 #include "core/transport/light_path_start.h"
 #include "core/transport/random_walk.h"
 #include "integrators/bidirectional/path_density.h"
@@ -104,7 +104,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   }
   SubpathRecorder recorder(scene, TransportMode::Importance, path);
   // The emitted weight is Le times a number, so lifting it lifts Le.
-  random_walk(scene, start->le.ray, emission_for(start->beta, wavelengths), TransportMode::Importance,
+  random_walk(scene, start->le.ray, emission_for(*start->emitter, start->beta, wavelengths), TransportMode::Importance,
               light_walk_limits(settings), sampler, recorder, light.medium, wavelengths);
 }
 

@@ -5,12 +5,12 @@
 //   <integrator type="direct"><integer name="emitter_samples" value="4"/></integrator>
 
 #include "core/bsdf/surface_bsdf.h"
+#include "core/lights/spectral_emission.h"
 #include "core/registry/properties.h"
 #include "core/render/direct_light.h"
 #include "core/render/pixel_integrator.h"
 #include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
 
@@ -76,8 +76,9 @@ DirectLight::DirectLight(const Scene& scene, Sampler& sampler, const DirectInteg
 
 WalkAction DirectLight::at_vertex(const WalkVertex& v) {
   if (!settings_.hide_emitters_)
-    emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                        [&](const Emitter&, Color Le, float w) { L += v.beta * emission_for(Le, wavelengths_) * w; });
+    emission_at_surface(scene_, v.si, v.wo, v.arrival, {}, [&](const Emitter& e, Color Le, float w) {
+      L += v.beta * emission_for(e, Le, wavelengths_) * w;
+    });
   const MisCounts counts{float(settings_.emitter_samples_), float(settings_.bsdf_samples_)};
   if (v.bsdf.lobes() & ~kDelta)
     for (int64_t i = 0; i < settings_.emitter_samples_; ++i) {
@@ -93,7 +94,7 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
     if (!bs) continue;
     const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / (bs->pdf * counts.n_bsdf));
     const Arrival arrival = arrival_from(v.si, *bs);
-    const auto add = [&](const Emitter&, Color Le, float w) { L += weight * emission_for(Le, wavelengths_) * w; };
+    const auto add = [&](const Emitter& e, Color Le, float w) { L += weight * emission_for(e, Le, wavelengths_) * w; };
     if (const auto hit = scene_.intersect(v.si.spawn(bs->wi)))
       emission_at_surface(scene_, *hit, -bs->wi, arrival, counts, add);
     else
@@ -104,8 +105,8 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
 
 void DirectLight::escaped(const WalkEscape& e) {
   if (!settings_.hide_emitters_)
-    emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter&, Color Le, float w) {
-      L += e.beta * emission_for(Le, wavelengths_) * w;
+    emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
+      L += e.beta * emission_for(emitter, Le, wavelengths_) * w;
     });
 }
 

@@ -1,8 +1,8 @@
 #include "integrators/path/path_tracing.h"
 
+#include "core/lights/spectral_emission.h"
 #include "core/render/direct_light.h"
 #include "core/scene/scene.h"
-#include "core/spectral/rgb_lift.h"
 #include "core/transport/direct_light_in_media.h"
 #include "core/transport/emission.h"
 #include "core/transport/random_walk.h"
@@ -22,8 +22,9 @@ class PathRadiance {
 
   WalkAction at_vertex(const WalkVertex& v) {
     if (shows_emission(v.segments))
-      emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                          [&](const Emitter&, Color Le, float w) { L += v.beta * emission_for(Le, wavelengths_) * w; });
+      emission_at_surface(scene_, v.si, v.wo, v.arrival, {}, [&](const Emitter& e, Color Le, float w) {
+        L += v.beta * emission_for(e, Le, wavelengths_) * w;
+      });
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
@@ -40,8 +41,8 @@ class PathRadiance {
 
   void escaped(const WalkEscape& e) {
     if (shows_emission(e.segments))
-      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter&, Color Le, float w) {
-        L += e.beta * emission_for(Le, wavelengths_) * w;
+      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
+        L += e.beta * emission_for(emitter, Le, wavelengths_) * w;
       });
   }
 
