@@ -35,6 +35,8 @@ class SurfaceBsdf {
   Color albedo(Vec3 wo_world) const { return bsdf_->albedo(ctx_, frame_.to_local(wo_world)); }
   uint32_t lobes() const { return bsdf_->lobes(); }
   bool disperses() const { return bsdf_->disperses(); }
+  // The path's wavelengths it returns values at (null in RGB mode).
+  const Wavelengths* wavelengths() const { return ctx_.wavelengths; }
 
  private:
   float shading_correction(Vec3 wo_world, Vec3 wi_world) const;

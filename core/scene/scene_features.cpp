@@ -46,6 +46,20 @@ bool lit_directly(const Scene& scene, const Shape& shape) {
   return false;
 }
 
+// The surfaces rays leaving the lights meet first: a narrow beam (a spot
+// light's cone) lights so little of a surface that probes spread over it
+// may all miss it.
+std::set<const Shape*> met_by_light_rays(const Scene& scene) {
+  std::set<const Shape*> met;
+  for (const auto& emitter : scene.emitters())
+    for (int i = 0; i < kProbePoints; ++i) {
+      const auto le = emitter->sample_Le(r2_point(i), r2_point(i + kProbePoints));
+      if (!le || le->Le.is_black()) continue;
+      if (const auto si = scene.intersect_shown(le->ray)) met.insert(si->shape);
+    }
+  return met;
+}
+
 std::string lobe_names(uint32_t lobes) {
   std::string out;
   const std::pair<uint32_t, const char*> names[] = {
@@ -135,10 +149,11 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
   }
   int specular_shapes = 0;
   const Shape* lit_specular = nullptr;
+  const std::set<const Shape*> met = met_by_light_rays(scene);
   for (const auto& s : scene.shapes()) {
     if (!(s->lobes() & kDelta)) continue;
     ++specular_shapes;
-    if (!lit_specular && lit_directly(scene, *s)) lit_specular = s.get();
+    if (!lit_specular && (met.count(s.get()) || lit_directly(scene, *s))) lit_specular = s.get();
   }
   if (specular_shapes == 0) {
     f.caustics_reason = "no surface has a delta lobe (mirror or smooth glass)";

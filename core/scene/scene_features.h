@@ -55,7 +55,7 @@ inline constexpr double kSpectrumMisfitThreshold = 0.05;
 
 // Looks at the scene's materials, lights and camera; whether a light
 // reaches a delta surface is decided by shadow rays from 256 points spread
-// over each such surface to every light. Spectral transport is chosen for
+// over each such surface to every light, and by 256 rays from each light. Spectral transport is chosen for
 // a dispersive dielectric, a conductor whose eta and k are given as
 // spectra, or an emission or reflectance spectrum RGB would misrepresent
 // (among `spectra`); not where media would then refuse to render.

@@ -1,5 +1,6 @@
 #include "core/spectral/wavelengths.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/color/cie_tables.h"
@@ -48,6 +49,17 @@ Wavelengths sample_wavelengths(float u) {
     w.pdf[size_t(i)] = visible_wavelength_pdf(w.nm[size_t(i)]);
   }
   return w;
+}
+
+Wavelengths pass_wavelengths(uint64_t pass, uint64_t seed) {
+  // splitmix64 of the seed, for the offset.
+  uint64_t z = seed + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  const double offset = double(z >> 11) * 0x1p-53;
+  const double u = std::fmod(offset + double(pass) * 0.6180339887498949, 1.0);
+  return sample_wavelengths(float(std::min(u, 0x1.fffffep-1)));
 }
 
 void terminate_secondaries(Wavelengths& w) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "core/math/color.h"
 #include "core/math/sampled_spectrum.h"
@@ -43,6 +44,12 @@ float sample_visible_wavelength(float u);
 // u + 1/3 and u + 2/3 (modulo 1) through the same inversion, so that each
 // follows the density above and the three spread over the spectrum.
 Wavelengths sample_wavelengths(float u);
+
+// The wavelengths every path of a photon pass shares (photons and the
+// camera paths that gather them must be at the same wavelengths): u of
+// pass k is a random offset from `seed` plus k times the golden ratio,
+// modulo 1, so that each pass's u is uniform and the passes spread evenly.
+Wavelengths pass_wavelengths(uint64_t pass, uint64_t seed);
 
 // A spectrum's values at the wavelengths.
 inline Color spectrum_at(const SampledSpectrum& s, const Wavelengths& w) {

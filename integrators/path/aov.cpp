@@ -11,6 +11,7 @@
 //   depth       distance from the camera along the ray: name.T
 // Rays that miss write zeros. Media and their null boundaries are looked
 // through: the values are those of the first surface that scatters light.
+// Albedo is the RGB albedo in either transport mode.
 //
 //   <integrator type="aov"><string name="aovs" value="a:albedo,n:sh_normal"/></integrator>
 
@@ -50,6 +51,8 @@ class AovIntegrator final : public PixelIntegrator {
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
   bool renders_media() const override { return true; }
+  // The layers carry no light, so spectral transport changes nothing here.
+  bool renders_spectral() const override { return true; }
 
   std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t) const override {
     return std::make_unique<AovEstimator>(evaluator_, scene);

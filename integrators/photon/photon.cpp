@@ -7,7 +7,9 @@
 // the gather radius shrinks as r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), so
 // the image converges to the right answer as the rounds add up. When the
 // scene cannot have caustic paths (SceneFeatures) no photon is traced and
-// the integrator costs what path costs.
+// the integrator costs what path costs. In spectral mode a round's photons
+// and the camera paths of its pass share the round's wavelengths
+// (pass_wavelengths), so that photons meet BSDFs at their own wavelengths.
 //
 // max_depth limits the whole path, a photon's segments included; rr_depth
 // counts the vertices before Russian roulette on camera and photon paths
@@ -24,6 +26,7 @@
 #include "core/registry/properties.h"
 #include "core/render/path_settings.h"
 #include "core/render/pixel_integrator.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "integrators/path/path_tracing.h"
 #include "integrators/photon/photon_density.h"
@@ -77,6 +80,7 @@ class CausticRounds final : public PixelEstimator {
   bool enabled_;
   float initial_radius_;
   std::optional<uint32_t> round_;
+  std::optional<Wavelengths> round_wavelengths_;  // spectral mode, with photons
   uint32_t rounds_ = 0;
   TracedPhotons traced_;  // kept between rounds, so that its memory is reused
   PhotonMap map_;
@@ -98,6 +102,7 @@ class PhotonIntegrator final : public PixelIntegrator {
   }
 
   bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     const std::string media = scene.features().media
@@ -135,7 +140,9 @@ uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(se
 bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
   if (!enabled_ || round_ == pass) return true;
   const uint64_t photons = uint64_t(settings_.photon_.photons);
-  if (!trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, traced_, stop))
+  if (scene_.features().spectral) round_wavelengths_ = pass_wavelengths(pass, seed_);
+  if (!trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, traced_, stop,
+                     round_wavelengths_ ? &*round_wavelengths_ : nullptr))
     return false;
   round_ = pass;
   ++rounds_;
@@ -144,8 +151,18 @@ bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
   return true;
 }
 
+// Without photons, spectral paths draw their own wavelengths, as path's do.
 void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {
-  const Color L = trace_path(scene_, ray, sampler, settings_.settings_, enabled_ ? &*gather_ : nullptr);
+  Color L;
+  if (!enabled_) {
+    SampleWavelengths w(scene_, sampler);
+    L = w.to_rgb(trace_path(scene_, ray, sampler, settings_.settings_, nullptr, w.get()));
+  } else if (round_wavelengths_) {
+    Wavelengths w = *round_wavelengths_;
+    L = spectral_to_rgb(trace_path(scene_, ray, sampler, settings_.settings_, &*gather_, &w), w);
+  } else {
+    L = trace_path(scene_, ray, sampler, settings_.settings_, &*gather_);
+  }
   out[0] = L.r;
   out[1] = L.g;
   out[2] = L.b;

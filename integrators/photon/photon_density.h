@@ -20,7 +20,9 @@ struct PhotonGather {
 // Divided by pi radius^2 and the photons emitted, the flux is the radiance
 // leaving toward wo by the photons' paths (a uniform disc kernel). Photon
 // density is per unit of geometric area, so each photon is divided by its
-// geometric cosine; shading uses the shading normal.
+// geometric cosine; shading uses the shading normal. In spectral mode the
+// photons and the BSDF are at the same wavelengths (the round's), and the
+// flux is at the BSDF's.
 PhotonGather gather_photons(const PhotonMap& map, float radius, const SurfaceInteraction& si, const SurfaceBsdf& bsdf,
                             Vec3 wo, int64_t camera_segments, int64_t max_depth);
 

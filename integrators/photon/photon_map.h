@@ -18,6 +18,9 @@ struct Photon {
   Vec3 n;              // geometric normal of the surface it landed on
   Color power;         // flux it carries, before division by the photons emitted
   uint32_t depth = 0;  // segments from the light
+  // In spectral mode: it met a dispersive surface, so only the hero
+  // wavelength's power counts (the others are zero).
+  bool hero_only = false;
 };
 
 // Photons in a hashed uniform grid whose cells are as wide as the query

@@ -3,7 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <optional>
 
+#include "core/lights/spectral_emission.h"
 #include "core/scene/scene.h"
 #include "core/transport/light_path_start.h"
 #include "core/transport/random_walk.h"
@@ -17,11 +19,13 @@ constexpr uint64_t kBlock = 1024;
 // Keeps the photons of the kind asked for where a light walk lands.
 class PhotonRecorder {
  public:
-  PhotonRecorder(PhotonPaths kind, std::vector<Photon>& out) : kind_(kind), out_(out) {}
+  PhotonRecorder(PhotonPaths kind, std::vector<Photon>& out, const Wavelengths* wavelengths)
+      : kind_(kind), out_(out), wavelengths_(wavelengths) {}
 
   WalkAction at_vertex(const WalkVertex& v) {
     if (v.segments >= 2 && (v.bsdf.lobes() & ~kDelta))
-      out_.push_back({v.si.p, v.wo, v.si.ng, v.beta, uint32_t(v.segments)});
+      out_.push_back(
+          {v.si.p, v.wo, v.si.ng, v.beta, uint32_t(v.segments), wavelengths_ && secondaries_terminated(*wavelengths_)});
     return WalkAction::Continue;
   }
   void escaped(const WalkEscape&) {}
@@ -39,22 +43,28 @@ class PhotonRecorder {
  private:
   PhotonPaths kind_;
   std::vector<Photon>& out_;
+  const Wavelengths* wavelengths_;
 };
 
+// `round_wavelengths` is copied, as a photon meeting dispersion terminates its own.
 void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
-                  std::vector<Photon>& out) {
+                  std::vector<Photon>& out, const Wavelengths* round_wavelengths) {
   const auto start = start_light_path(scene, sampler);
   if (!start) return;
-  PhotonRecorder recorder(kind, out);
+  std::optional<Wavelengths> w;
+  if (round_wavelengths) w = *round_wavelengths;
+  Wavelengths* wavelengths = w ? &*w : nullptr;
+  PhotonRecorder recorder(kind, out, wavelengths);
   // A photon needs at least one more segment, to the camera: light walks stop one short of max_depth.
-  random_walk(scene, start->le.ray, start->beta, TransportMode::Importance, light_walk_limits(settings), sampler,
-              recorder, start->emitter->medium());
+  random_walk(scene, start->le.ray, emission_for(*start->emitter, start->beta, wavelengths), TransportMode::Importance,
+              light_walk_limits(settings), sampler, recorder, start->emitter->medium(), wavelengths);
 }
 
 }  // namespace
 
 bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
-                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop) {
+                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop,
+                   const Wavelengths* wavelengths) {
   const auto stopped = [&] { return stop && stop->load(); };
   const size_t blocks = size_t((count + kBlock - 1) / kBlock);
   std::vector<std::vector<Photon>>& found = out.blocks;
@@ -65,7 +75,7 @@ bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_
     auto sampler = scene.sensor().sampler()->clone();
     for (uint64_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(round), i, seed);
-      trace_photon(scene, kind, *sampler, settings, found[b]);
+      trace_photon(scene, kind, *sampler, settings, found[b], wavelengths);
     }
   });
   if (stopped()) return false;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/render/path_settings.h"
+#include "core/spectral/wavelengths.h"
 #include "integrators/photon/photon_map.h"
 
 namespace caustica {
@@ -38,8 +39,10 @@ struct TracedPhotons {
 // is the same for any thread count. Photons whose paths could not reach the
 // camera within settings.max_depth are not kept. The photons land in
 // out.all; false, once `stop` (may be null) turns true: a production-size
-// round takes long.
+// round takes long. With `wavelengths` (spectral mode) every photon carries
+// its power at them, the round's wavelengths.
 bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
-                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop = nullptr);
+                   const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop = nullptr,
+                   const Wavelengths* wavelengths = nullptr);
 
 }  // namespace caustica

@@ -17,6 +17,10 @@
 // scattered in a medium reaches the image through the surface its
 // phase-sampled continuation finds, and each photon counts what it carries
 // to a surface after scattering anywhere.
+// In spectral mode each iteration draws one set of wavelengths
+// (pass_wavelengths) that its photons and camera paths share, since a
+// photon's power must meet the BSDF at its own wavelengths; the passes'
+// sets spread evenly over the spectrum.
 // Photon rounds and the camera pass run in parallel and are deterministic
 // for a seed.
 //
@@ -30,9 +34,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/lights/spectral_emission.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/render/camera_sample.h"
@@ -63,21 +69,24 @@ struct PixelState {
 // pixel's radius.
 class VisiblePoint {
  public:
-  VisiblePoint(const Scene& scene, const PhotonMap& map, Sampler& sampler, const PathSettings& settings, PixelState& px)
-      : scene_(scene), map_(map), sampler_(sampler), settings_(settings), px_(px) {}
+  // With `wavelengths` (spectral mode) what it adds is at them.
+  VisiblePoint(const Scene& scene, const PhotonMap& map, Sampler& sampler, const PathSettings& settings,
+               const PixelState& px, const Wavelengths* wavelengths)
+      : scene_(scene), map_(map), sampler_(sampler), settings_(settings), px_(px), wavelengths_(wavelengths) {}
 
   WalkAction at_vertex(const WalkVertex& v) {
     if (v.segments > 1 || !settings_.hide_emitters)
-      emission_at_surface(scene_, v.si, v.wo, v.arrival, {},
-                          [&](const Emitter&, Color Le, float w) { px_.direct += v.beta * Le * w; });
+      emission_at_surface(scene_, v.si, v.wo, v.arrival, {}, [&](const Emitter& e, Color Le, float w) {
+        direct += v.beta * emission_for(e, Le, wavelengths_) * w;
+      });
     if (v.last) return WalkAction::Stop;
     if (!(v.bsdf.lobes() & ~kDelta)) return WalkAction::Continue;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
-    px_.direct += v.beta * (scene_.features().medium_walk
-                                ? sample_direct_light_in_media(scene_, v.si, v.bsdf, v.wo, v.medium, sampler_, u_select,
-                                                               u_light, 0)
-                                : sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, 1, 0));
+    direct += v.beta *
+              (scene_.features().medium_walk
+                   ? sample_direct_light_in_media(scene_, v.si, v.bsdf, v.wo, v.medium, sampler_, u_select, u_light, 0)
+                   : sample_direct_light(scene_, v.si, v.bsdf, v.wo, u_select, u_light, 1, 0, wavelengths_));
     const PhotonGather g = gather_photons(map_, px_.radius, v.si, v.bsdf, v.wo, v.segments, settings_.max_depth);
     flux = v.beta * g.flux;
     photons = double(g.count);
@@ -86,8 +95,9 @@ class VisiblePoint {
 
   void escaped(const WalkEscape& e) {
     if (e.segments > 1 || !settings_.hide_emitters)
-      emission_from_environment(scene_, e.ray.d, e.arrival, {},
-                                [&](const Emitter&, Color Le, float w) { px_.direct += e.beta * Le * w; });
+      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
+        direct += e.beta * emission_for(emitter, Le, wavelengths_) * w;
+      });
   }
 
   WalkAction scattered(const BsdfSample&) { return WalkAction::Continue; }
@@ -97,13 +107,13 @@ class VisiblePoint {
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
     if (v.medium.sample_emitters())
-      px_.direct +=
-          v.beta * sample_direct_light_at_medium_point(scene_, v.p, v.medium, v.wo, sampler_, u_select, u_light);
+      direct += v.beta * sample_direct_light_at_medium_point(scene_, v.p, v.medium, v.wo, sampler_, u_select, u_light);
     return WalkAction::Continue;
   }
 
   WalkAction scattered_in_medium(const PhaseSample&) { return WalkAction::Continue; }
 
+  Color direct;        // emission met and next-event estimates
   Color flux;          // the photons' contribution, times the path's weight
   double photons = 0;  // how many were found
 
@@ -112,7 +122,8 @@ class VisiblePoint {
   const PhotonMap& map_;
   Sampler& sampler_;
   const PathSettings& settings_;
-  PixelState& px_;
+  const PixelState& px_;
+  const Wavelengths* wavelengths_;
 };
 
 class StochasticProgressivePhotonMapping;
@@ -127,7 +138,8 @@ class SppmPixels final : public IterationState {
   std::string summary() const override;
 
  private:
-  void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration);
+  void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration,
+                     const Wavelengths* wavelengths);
 
   const StochasticProgressivePhotonMapping& settings_;
   const Scene& scene_;
@@ -150,6 +162,7 @@ class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
   }
 
   bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("sppm: ") + std::to_string(photon_.photons) +
@@ -157,7 +170,9 @@ class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
            "pixel's visible point" +
            (scene.features().media ? "; media: the camera walk passes scattering events (direct light at each), "
                                      "photons scatter in them and are kept on surfaces only"
-                                   : "");
+                                   : "") +
+           (scene.features().spectral ? "; spectral: each iteration's photons and camera paths share its wavelengths"
+                                      : "");
   }
 
  private:
@@ -175,15 +190,18 @@ SppmPixels::SppmPixels(const StochasticProgressivePhotonMapping& settings, const
 bool SppmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   float max_radius = 0;
   for (const PixelState& px : pixels_) max_radius = std::max(max_radius, px.radius);
+  std::optional<Wavelengths> wavelengths;
+  if (scene_.features().spectral) wavelengths = pass_wavelengths(iteration, seed_);
+  const Wavelengths* w = wavelengths ? &*wavelengths : nullptr;
   if (!trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration, seed_,
-                     settings_.settings_, traced_, stop))
+                     settings_.settings_, traced_, stop, w))
     return false;
   map_.build(traced_.all, max_radius);
   const PhotonMap& map = map_;
   const int height = int(pixels_.size() / size_t(width_));
   tbb::parallel_for(0, height, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();
-    for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration);
+    for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration, w);
   });
   ++iterations_;
   return true;
@@ -204,12 +222,21 @@ Color SppmPixels::estimate(Vec2i pixel) const {
   return px.direct / float(iterations_) + px.tau / float(emitted * kPi * double(px.radius) * double(px.radius));
 }
 
-void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration) {
+// The camera path's estimates enter the pixel in RGB, converted at its own
+// copy of the iteration's wavelengths (which dispersion may terminate).
+void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration,
+                               const Wavelengths* iteration_wavelengths) {
   PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
   const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
-  VisiblePoint visible(scene_, map, sampler, settings_.settings_, px);
+  std::optional<Wavelengths> w;
+  if (iteration_wavelengths) w = *iteration_wavelengths;
+  Wavelengths* wavelengths = w ? &*w : nullptr;
+  VisiblePoint visible(scene_, map, sampler, settings_.settings_, px, wavelengths);
   random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,
-              visible, scene_.sensor().medium());
+              visible, scene_.sensor().medium(), wavelengths);
+  const auto rgb = [&](Color c) { return wavelengths ? spectral_to_rgb(c, *wavelengths) : c; };
+  px.direct += rgb(visible.direct);
+  visible.flux = rgb(visible.flux);
   if (visible.photons > 0) {
     const double n_new = px.n + settings_.photon_.alpha * visible.photons;
     const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2

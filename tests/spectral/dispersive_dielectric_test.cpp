@@ -155,8 +155,10 @@ TEST(DispersiveDielectric, TerminatedSecondariesLeaveTheHeroWeighedThreeTimes) {
 }
 
 std::string dispersive_furnace(const std::string& integrator, const std::string& glass) {
-  return "<scene version='3.0.0'><integrator type='" + integrator +
-         "'/><sensor type='perspective'><float name='fov' value='50'/><sampler type='independent'/>"
+  const bool photons = integrator == "sppm" || integrator == "photon";
+  return "<scene version='3.0.0'><integrator type='" + integrator + "'>" +
+         (photons ? "<integer name='photons' value='10000'/>" : "") +
+         "</integrator><sensor type='perspective'><float name='fov' value='50'/><sampler type='independent'/>"
          "<transform name='to_world'><lookat origin='0, 0, 0' target='1, 0.1, 0'/></transform>"
          "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/>"
          "<rfilter type='box'/></film></sensor>"
@@ -176,8 +178,9 @@ struct FurnaceCase {
 // stays far below the test's resolution.
 constexpr const char* kRoughSf11 =
     "<bsdf type='roughdielectric'><float name='alpha' value='0.01'/><string name='dispersion' value='sf11'/></bsdf>";
-const FurnaceCase kFurnaces[] = {
-    {"path", kSf11Glass}, {"path", kRoughSf11}, {"bdpt", kSf11Glass}, {"bdpt", kRoughSf11}, {"ptracer", kSf11Glass}};
+const FurnaceCase kFurnaces[] = {{"path", kSf11Glass},  {"path", kRoughSf11},    {"bdpt", kSf11Glass},
+                                 {"bdpt", kRoughSf11},  {"ptracer", kSf11Glass}, {"sppm", kSf11Glass},
+                                 {"photon", kSf11Glass}};
 
 class DispersiveFurnace : public testing::TestWithParam<FurnaceCase> {};
 
