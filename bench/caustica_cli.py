@@ -33,19 +33,20 @@ class Caustica:
             raise RuntimeError(f"caustica {args[0]} failed: {message}")
         return result.stdout
 
-    def render(self, scene, output, *, integrator, spp, seed, res):
+    def render(self, scene, output, *, integrator, spp, seed, res, options=()):
         """Renders a float EXR (and its PNG); returns the EXR's metadata.
 
         `integrator` may name a sampler after an '@' (path@ldsampler), which the scene takes as $sampler, with
         its sample_count ($spp) the run's: the stratifying samplers stratify the whole run, not blocks of it.
         Without one the scene gets `independent`, whatever its own default: references, merges and the
-        variance layers assume independent samples.
+        variance layers assume independent samples. `options` go to the command line as they are
+        (--spectral on).
         """
         name, _, sampler = integrator.partition("@")
         defines = ["-D", f"res={res}"] + (["-D", f"sampler={sampler}", "-D", f"spp={spp}"]
                                           if sampler else ["-D", "sampler=independent"])
         self._run(["render", scene, "-o", output, "--integrator", name, "--spp", spp, "--seed", seed, *defines,
-                   "--threads", self.threads, "--exr-format", "float", "-q"])
+                   "--threads", self.threads, "--exr-format", "float", "-q", *options])
         return read_metadata(output)
 
     def merge(self, inputs, output):

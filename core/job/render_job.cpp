@@ -15,6 +15,15 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
   integrator_->check_scene(*scene_);
 }
 
+std::string RenderJob::plan() const {
+  std::string plan = integrator_->plan(*scene_);
+  if (transport_worth_telling(scene_->features())) {
+    plan += '\n';
+    plan += describe_transport(scene_->features());
+  }
+  return plan;
+}
+
 RenderResult RenderJob::run(RenderProgress* progress) const {
   const Film& film = *scene_->sensor().film();
   RenderResult result{FilmBuffer(film.width(), film.height(), integrator_->channels()), {}};

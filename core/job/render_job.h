@@ -50,7 +50,8 @@ class RenderJob {
   const Integrator& integrator() const { return *integrator_; }
   const RenderSettings& settings() const { return settings_; }
   // What the integrator will do with this scene, and what it skips.
-  std::string plan() const { return integrator_->plan(*scene_); }
+  // What the integrator will do with the scene, and the transport mode where worth saying.
+  std::string plan() const;
 
   RenderResult run(RenderProgress* progress = nullptr) const;
   // The first-hit layers of a result of run(), to be evaluated as its image

@@ -284,7 +284,15 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);
-  scene->set_features(analyze_scene(*scene, inst.textures > 0, inst.spectra));
+  SceneFeatures features = analyze_scene(*scene, inst.textures > 0, inst.spectra);
+  // <scene spectral="on|off|auto">: the file may decide the transport mode
+  // (the command line's --spectral on|off still overrides it).
+  if (const std::string* mode = root.attribute("spectral")) {
+    if (*mode != "on" && *mode != "off" && *mode != "auto")
+      throw SceneError(root.where, "<scene spectral='" + mode->substr(0, 40) + "'> must be on, off or auto");
+    if (*mode != "auto") force_spectral(features, *mode == "on", "forced by the scene file");
+  }
+  scene->set_features(std::move(features));
   if (auto warning = clip_warning(scene->sensor().clip_planes(), scene->bounds()))
     inst.warnings.push_back(source + ": " + *warning);
   inst.warnings.insert(inst.warnings.begin(), upgrade_notes.begin(), upgrade_notes.end());

@@ -97,6 +97,9 @@ void count_media(const Scene& scene, SceneFeatures& f) {
 
 namespace {
 
+constexpr const char* kNothingCallsForSpectral =
+    "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
+
 // Why the scene calls for spectral transport, or "".
 std::string spectral_content(const Scene& scene, const std::vector<GivenSpectrum>& spectra) {
   for (const auto& s : scene.shapes())
@@ -119,8 +122,7 @@ std::string spectral_content(const Scene& scene, const std::vector<GivenSpectrum
 void decide_spectral(const Scene& scene, const std::vector<GivenSpectrum>& spectra, SceneFeatures& f) {
   const std::string content = spectral_content(scene, spectra);
   if (content.empty()) {
-    f.spectral_reason =
-        "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
+    f.spectral_reason = kNothingCallsForSpectral;
   } else if (f.media > 0) {
     f.spectral_reason = "the scene holds " + content + ", but its media are not rendered spectrally yet";
   } else {
@@ -174,9 +176,9 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
   return f;
 }
 
-void force_spectral(SceneFeatures& f, bool spectral) {
+void force_spectral(SceneFeatures& f, bool spectral, const std::string& why) {
   f.spectral = spectral;
-  f.spectral_reason = "forced by the render settings";
+  f.spectral_reason = why;
 }
 
 std::string describe(const SceneFeatures& f) {
@@ -194,8 +196,16 @@ std::string describe(const SceneFeatures& f) {
         << " heterogeneous; " << f.chromatic_media << " with extinction differing between channels)";
     if (f.camera_in_medium) out << "; the camera sits in one";
   }
-  out << "\nspectral transport: " << (f.spectral ? "yes (" : "no, RGB (") << f.spectral_reason << ")\n";
+  out << "\n" << describe_transport(f) << "\n";
   return out.str();
+}
+
+std::string describe_transport(const SceneFeatures& f) {
+  return std::string("spectral transport: ") + (f.spectral ? "yes (" : "no, RGB (") + f.spectral_reason + ")";
+}
+
+bool transport_worth_telling(const SceneFeatures& f) {
+  return f.spectral || f.spectral_reason != kNothingCallsForSpectral;
 }
 
 }  // namespace caustica

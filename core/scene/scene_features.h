@@ -61,11 +61,15 @@ inline constexpr double kSpectrumMisfitThreshold = 0.05;
 // (among `spectra`); not where media would then refuse to render.
 SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector<GivenSpectrum>& spectra = {});
 
-// Spectral or RGB transport as a render setting decides, in place of the
-// analysis's choice.
-void force_spectral(SceneFeatures& f, bool spectral);
+// Spectral or RGB transport as a render setting (or the scene file, `why`)
+// decides, in place of the analysis's choice.
+void force_spectral(SceneFeatures& f, bool spectral, const std::string& why = "forced by the render settings");
 
 // A few lines for `caustica info`.
 std::string describe(const SceneFeatures& features);
+// Its line on the transport mode, and whether a render's log should print
+// it (spectral transport, or RGB where something called for spectral).
+std::string describe_transport(const SceneFeatures& features);
+bool transport_worth_telling(const SceneFeatures& features);
 
 }  // namespace caustica

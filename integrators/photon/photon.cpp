@@ -113,7 +113,10 @@ class PhotonIntegrator final : public PixelIntegrator {
       return std::string("photon: caustic photon pass skipped (") + scene.features().caustics_reason +
              "); path tracing alone, at path's cost" + media;
     return std::string("photon: ") + std::to_string(photon_.photons) + " caustic photons per round (" +
-           scene.features().caustics_reason + "), path tracing for the rest" + media;
+           scene.features().caustics_reason + "), path tracing for the rest" + media +
+           (scene.features().spectral ? "; spectral: each round's photons and its pass's camera paths share its "
+                                        "wavelengths"
+                                      : "");
   }
 
   std::string distributed_note() const override {

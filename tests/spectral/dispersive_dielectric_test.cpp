@@ -13,12 +13,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/color/cie_tables.h"
 #include "core/scene/scene.h"
 #include "core/spectral/wavelengths.h"
 #include "tests/support/bsdf_checks.h"
 #include "tests/support/chi2.h"
+#include "tests/support/command.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
@@ -27,6 +29,7 @@ namespace caustica {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr const char* kSf11Glass =
     "<bsdf type='dielectric'><string name='dispersion' value='sf11'/><string name='ext_ior' value='vacuum'/></bsdf>";
@@ -108,6 +111,51 @@ TEST(DispersiveDielectric, WrappersAndTheAnalysisSeeDispersion) {
   EXPECT_THAT(describe(dispersive->features()), HasSubstr("spectral transport: yes (a dispersive dielectric: sphere)"));
   const auto plain = test::scene_from_xml(scene_start + "<bsdf type='dielectric'/></shape></scene>");
   EXPECT_FALSE(plain->features().spectral);
+}
+
+TEST(DispersiveDielectric, TheSceneFileMayForceEitherMode) {
+  const auto scene = [](const std::string& mode, const std::string& bsdf) {
+    return "<scene version='3.0.0' spectral='" + mode +
+           "'>\n<emitter type='point'><point name='position' x='0' y='3' z='0'/></emitter><shape type='sphere'>" +
+           bsdf + "</shape></scene>";
+  };
+  const auto off = test::scene_from_xml(scene("off", kSf11Glass));
+  EXPECT_FALSE(off->features().spectral);
+  EXPECT_THAT(describe(off->features()), HasSubstr("spectral transport: no, RGB (forced by the scene file)"));
+  const auto on = test::scene_from_xml(scene("on", "<bsdf type='diffuse'/>"));
+  EXPECT_TRUE(on->features().spectral);
+  EXPECT_TRUE(test::scene_from_xml(scene("auto", kSf11Glass))->features().spectral);
+  // The command line overrides the file.
+  RenderSettings settings;
+  settings.transport = RenderSettings::Transport::Spectral;
+  EXPECT_TRUE(RenderJob(off, settings).scene()->features().spectral);
+  EXPECT_THAT(test::load_error(scene("maybe", "<bsdf type='diffuse'/>")),
+              HasSubstr("test.xml:1: <scene spectral='maybe'> must be on, off or auto"));
+}
+
+TEST(DispersiveDielectric, ShippedSpectralScenesRenderSpectrally) {
+  for (const char* name : {"prism", "cornell-box-diamond", "cornell-box-spectral"}) {
+    const LoadedScene scene =
+        load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "8"}, {"spp", "2"}});
+    EXPECT_TRUE(scene->features().spectral) << name;
+    RenderStats stats;
+    test::render_scene(scene, 2, 1, 0, &stats);
+    EXPECT_EQ(stats.dropped, 0u) << name;
+  }
+}
+
+TEST(DispersiveDielectric, TheRenderLogSaysWhichModeAndWhy) {
+  const std::string out = (std::filesystem::temp_directory_path() / "caustica_prism_log.exr").string();
+  const auto spectral = test::run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) +
+                                           "/scenes/prism.xml -D res=8 -D spp=1 -o " + out);
+  EXPECT_EQ(spectral.status, 0) << spectral.output;
+  EXPECT_THAT(spectral.output, HasSubstr("spectral transport: yes (a dispersive dielectric: obj)"));
+  const auto forced = test::run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) +
+                                         "/scenes/prism.xml -D res=8 -D spp=1 --spectral off -o " + out);
+  EXPECT_THAT(forced.output, HasSubstr("spectral transport: no, RGB (forced by the render settings)"));
+  const auto rgb = test::run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) +
+                                      "/scenes/cornell-box.xml -D res=8 -D spp=1 -o " + out);
+  EXPECT_THAT(rgb.output, Not(HasSubstr("spectral transport")));
 }
 
 TEST(DispersiveDielectric, BadDispersionsAreRefused) {
