@@ -32,7 +32,6 @@ class MeasuredEmission {
     const float scale = rgb_[channel_] > 0 ? rgb[channel_] / rgb_[channel_] : 0;
     return spectrum_at(*spectrum_, w) * scale;
   }
-  const SampledSpectrum& spectrum() const { return *spectrum_; }
 
  private:
   std::shared_ptr<const SampledSpectrum> spectrum_;

@@ -1,6 +1,5 @@
 #include "core/scene/scene_features.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -92,10 +91,6 @@ void count_media(const Scene& scene, SceneFeatures& f) {
   f.media = int(media.size());
   f.medium_walk = f.media > 0 || (f.lobes & kNull);
 }
-
-}  // namespace
-
-namespace {
 
 constexpr const char* kNothingCallsForSpectral =
     "nothing in the scene needs it: no dispersive dielectric, spectral emitter or measured conductor";
