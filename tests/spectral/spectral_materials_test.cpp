@@ -16,6 +16,7 @@
 
 #include "core/scene/scene.h"
 #include "tests/support/chi2.h"
+#include "tests/support/image_mean.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
 
@@ -62,26 +63,9 @@ std::string ball_in_furnace(const std::string& material, int max_depth = -1) {
          material + "</shape></scene>";
 }
 
-struct ImageMean {
-  double mean[3], standard_error[3];
-};
-
-ImageMean image_mean(const LoadedScene& scene, uint64_t seed) {
-  const FilmBuffer film = test::render_scene(scene, 128, seed);
-  const auto img = film.resolve();
-  const auto var = film.variance();
-  const double pixels = double(img.size() / 3);
-  ImageMean m{};
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0, var_sum = 0;
-    for (size_t i = size_t(c); i < img.size(); i += 3) {
-      EXPECT_TRUE(std::isfinite(img[i]));
-      sum += img[i];
-      var_sum += var[i];
-    }
-    m.mean[c] = sum / pixels;
-    m.standard_error[c] = std::sqrt(var_sum) / pixels;
-  }
+test::ImageMean image_mean(const LoadedScene& scene, uint64_t seed) {
+  const test::ImageMean m = test::image_mean(test::render_scene(scene, 128, seed));
+  EXPECT_EQ(m.non_finite, 0);
   return m;
 }
 
@@ -94,8 +78,8 @@ LoadedScene spectral(const std::string& xml) {
 }
 
 void expect_as_in_rgb(const std::string& xml, const std::string& what) {
-  const ImageMean rgb = image_mean(test::scene_from_xml(xml), 3);
-  const ImageMean spec = image_mean(spectral(xml), 4);
+  const test::ImageMean rgb = image_mean(test::scene_from_xml(xml), 3);
+  const test::ImageMean spec = image_mean(spectral(xml), 4);
   for (int c = 0; c < 3; ++c) {
     const double se = std::hypot(rgb.standard_error[c], spec.standard_error[c]) + 1e-5 * rgb.mean[c];
     EXPECT_LT(std::abs(spec.mean[c] - rgb.mean[c]), kZCritical * se)
@@ -125,7 +109,7 @@ TEST_P(ColouredSpectralMaterials, OneBounceUnderWhiteRendersAsInRgb) {
 INSTANTIATE_TEST_SUITE_P(Materials, ColouredSpectralMaterials, testing::ValuesIn(kColouredMaterials), material_name);
 
 TEST(SpectralMaterials, GoldKeepsItsHue) {
-  const ImageMean gold =
+  const test::ImageMean gold =
       image_mean(spectral(ball_in_furnace("<bsdf type='conductor'><string name='material' value='Au'/></bsdf>")), 5);
   EXPECT_GT(gold.mean[0], gold.mean[2]);
 }

@@ -27,6 +27,7 @@
 #include "core/sampling/warp.h"
 #include "core/scene/scene.h"
 #include "tests/support/chi2.h"
+#include "tests/support/image_mean.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
@@ -59,17 +60,9 @@ std::string furnace(const std::string& rho, const std::string& integrator = "pat
 }
 
 void expect_image_mean(const LoadedScene& scene, Color expected, uint64_t seed, const std::string& what) {
-  const FilmBuffer film = test::render_scene(scene, 64, seed);
-  const auto img = film.resolve();
-  const auto var = film.variance();
-  const double pixels = double(img.size() / 3);
+  const test::ImageMean m = test::image_mean(test::render_scene(scene, 64, seed));
   for (int c = 0; c < 3; ++c) {
-    double sum = 0, var_sum = 0;
-    for (size_t i = size_t(c); i < img.size(); i += 3) {
-      sum += img[i];
-      var_sum += var[i];
-    }
-    const double mean = sum / pixels, standard_error = std::sqrt(var_sum) / pixels;
+    const double mean = m.mean[c], standard_error = m.standard_error[c];
     EXPECT_LT(std::abs(mean - expected[c]), test::two_sided_z_critical(kAlpha) * standard_error + 1e-4)
         << what << ", channel " << c << ": " << mean << " +- " << standard_error << ", expected " << expected[c];
   }
