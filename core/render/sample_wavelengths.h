@@ -16,6 +16,11 @@ class SampleWavelengths {
   SampleWavelengths(const Scene& scene, Sampler& sampler) {
     if (scene.features().spectral) w_ = sample_wavelengths(sampler.next_1d());
   }
+  // A copy of wavelengths a photon round shares (null in RGB mode): each
+  // path gets its own, as dispersion terminates a path's secondaries.
+  explicit SampleWavelengths(const Wavelengths* shared) {
+    if (shared) w_ = *shared;
+  }
 
   // Null in RGB mode.
   Wavelengths* get() { return w_ ? &*w_ : nullptr; }

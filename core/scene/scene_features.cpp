@@ -103,7 +103,9 @@ std::string spectral_content(const Scene& scene, const std::vector<GivenSpectrum
     const std::string given = g.where.str() + ": " + g.owner + " " + g.parameter + " given as a spectrum";
     if (g.owner == "bsdf" && (g.parameter == "eta" || g.parameter == "k"))
       return "a conductor whose index is measured: " + given;
-    if (g.owner != "bsdf" && g.owner != "emitter" && g.owner != "texture") continue;
+    // Spectral transport reads the spectra given to materials and emitters
+    // (not those inside textures, media or the like, which stay colours).
+    if (g.owner != "bsdf" && g.owner != "emitter") continue;
     const double misfit = lift_misfit(*g.spectrum, g.owner == "emitter");
     if (misfit > kSpectrumMisfitThreshold) {
       char percent[16];
@@ -118,8 +120,9 @@ void decide_spectral(const Scene& scene, const std::vector<GivenSpectrum>& spect
   const std::string content = spectral_content(scene, spectra);
   if (content.empty()) {
     f.spectral_reason = kNothingCallsForSpectral;
-  } else if (f.media > 0) {
-    f.spectral_reason = "the scene holds " + content + ", but its media are not rendered spectrally yet";
+  } else if (f.medium_walk) {
+    f.spectral_reason = "the scene holds " + content +
+                        ", but its media are not rendered spectrally yet (nor index-matched null boundaries)";
   } else {
     f.spectral = true;
     f.spectral_reason = content;

@@ -44,7 +44,7 @@ struct SceneFeatures {
 // A colour the scene file gave as a spectrum, for the analysis to weigh.
 struct GivenSpectrum {
   SourceLocation where;
-  std::string owner;      // the element it was given to: bsdf, emitter, texture, ...
+  std::string owner;      // the element it was given to: bsdf, emitter, medium, ...
   std::string parameter;  // its name there
   std::shared_ptr<const SampledSpectrum> spectrum;
 };
@@ -58,7 +58,8 @@ inline constexpr double kSpectrumMisfitThreshold = 0.05;
 // over each such surface to every light, and by 256 rays from each light. Spectral transport is chosen for
 // a dispersive dielectric, a conductor whose eta and k are given as
 // spectra, or an emission or reflectance spectrum RGB would misrepresent
-// (among `spectra`); not where media would then refuse to render.
+// (among `spectra`); not where media or null boundaries would then refuse to
+// render.
 SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector<GivenSpectrum>& spectra = {});
 
 // Spectral or RGB transport as a render setting (or the scene file, `why`)

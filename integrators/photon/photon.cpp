@@ -160,11 +160,9 @@ void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> ou
   if (!enabled_) {
     SampleWavelengths w(scene_, sampler);
     L = w.to_rgb(trace_path(scene_, ray, sampler, settings_.settings_, nullptr, w.get()));
-  } else if (round_wavelengths_) {
-    Wavelengths w = *round_wavelengths_;
-    L = spectral_to_rgb(trace_path(scene_, ray, sampler, settings_.settings_, &*gather_, &w), w);
   } else {
-    L = trace_path(scene_, ray, sampler, settings_.settings_, &*gather_);
+    SampleWavelengths w(round_wavelengths_ ? &*round_wavelengths_ : nullptr);
+    L = w.to_rgb(trace_path(scene_, ray, sampler, settings_.settings_, &*gather_, w.get()));
   }
   out[0] = L.r;
   out[1] = L.g;

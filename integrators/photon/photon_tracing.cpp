@@ -3,9 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <optional>
 
 #include "core/lights/spectral_emission.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "core/transport/light_path_start.h"
 #include "core/transport/random_walk.h"
@@ -46,14 +46,12 @@ class PhotonRecorder {
   const Wavelengths* wavelengths_;
 };
 
-// `round_wavelengths` is copied, as a photon meeting dispersion terminates its own.
 void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
                   std::vector<Photon>& out, const Wavelengths* round_wavelengths) {
   const auto start = start_light_path(scene, sampler);
   if (!start) return;
-  std::optional<Wavelengths> w;
-  if (round_wavelengths) w = *round_wavelengths;
-  Wavelengths* wavelengths = w ? &*w : nullptr;
+  SampleWavelengths w(round_wavelengths);
+  Wavelengths* wavelengths = w.get();
   PhotonRecorder recorder(kind, out, wavelengths);
   // A photon needs at least one more segment, to the camera: light walks stop one short of max_depth.
   random_walk(scene, start->le.ray, emission_for(*start->emitter, start->beta, wavelengths), TransportMode::Importance,

@@ -45,6 +45,7 @@
 #include "core/render/direct_light.h"
 #include "core/render/iterative_integrator.h"
 #include "core/render/path_settings.h"
+#include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "core/transport/direct_light_in_media.h"
 #include "core/transport/emission.h"
@@ -228,15 +229,12 @@ void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pix
                                const Wavelengths* iteration_wavelengths) {
   PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
   const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
-  std::optional<Wavelengths> w;
-  if (iteration_wavelengths) w = *iteration_wavelengths;
-  Wavelengths* wavelengths = w ? &*w : nullptr;
-  VisiblePoint visible(scene_, map, sampler, settings_.settings_, px, wavelengths);
+  SampleWavelengths w(iteration_wavelengths);
+  VisiblePoint visible(scene_, map, sampler, settings_.settings_, px, w.get());
   random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,
-              visible, scene_.sensor().medium(), wavelengths);
-  const auto rgb = [&](Color c) { return wavelengths ? spectral_to_rgb(c, *wavelengths) : c; };
-  px.direct += rgb(visible.direct);
-  visible.flux = rgb(visible.flux);
+              visible, scene_.sensor().medium(), w.get());
+  px.direct += w.to_rgb(visible.direct);
+  visible.flux = w.to_rgb(visible.flux);
   if (visible.photons > 0) {
     const double n_new = px.n + settings_.photon_.alpha * visible.photons;
     const double shrink2 = n_new / (px.n + visible.photons);  // R_new^2 / R^2

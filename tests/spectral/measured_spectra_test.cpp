@@ -144,6 +144,13 @@ TEST(MeasuredSpectra, TheAnalysisWeighsWhatRgbWouldMisrepresent) {
                            "<medium type='homogeneous' id='fog'/>");
   EXPECT_FALSE(in_fog->features().spectral);
   EXPECT_THAT(describe(in_fog->features()), HasSubstr("but its media are not rendered spectrally yet"));
+  // An index-matched boundary alone takes the media's walk, which the
+  // spectral check refuses as well.
+  const auto behind_null =
+      with(std::string("<bsdf type='diffuse'><spectrum name='reflectance' value='") + kStep + "'/></bsdf>",
+           "<shape type='rectangle'><bsdf type='null'/></shape>");
+  EXPECT_FALSE(behind_null->features().spectral);
+  EXPECT_THAT(describe(behind_null->features()), HasSubstr("(nor index-matched null boundaries)"));
 }
 
 TEST(MeasuredSpectra, BadConductorSpectraAreRefused) {
