@@ -195,30 +195,24 @@ class BodyReader {
 
   double read(Type t) {
     if (format_ == Format::Ascii) return read_ascii(t);
-    const size_t n = type_size(t);
-    if (remaining() < n) throw error("the file ends in the middle of the data");
-    std::array<unsigned char, 8> raw{};
-    std::memcpy(raw.data(), bytes_.data() + pos_, n);
-    pos_ += n;
-    if ((format_ == Format::BigEndian) != (std::endian::native == std::endian::big))
-      std::reverse(raw.begin(), raw.begin() + n);
+    if (remaining() < type_size(t)) throw error("the file ends in the middle of the data");
     switch (t) {
       case Type::Int8:
-        return std::bit_cast<int8_t>(raw[0]);
+        return take<int8_t>();
       case Type::UInt8:
-        return raw[0];
+        return take<uint8_t>();
       case Type::Int16:
-        return load<int16_t>(raw);
+        return take<int16_t>();
       case Type::UInt16:
-        return load<uint16_t>(raw);
+        return take<uint16_t>();
       case Type::Int32:
-        return load<int32_t>(raw);
+        return take<int32_t>();
       case Type::UInt32:
-        return load<uint32_t>(raw);
+        return take<uint32_t>();
       case Type::Float32:
-        return load<float>(raw);
+        return take<float>();
       case Type::Float64:
-        return load<double>(raw);
+        return take<double>();
     }
     return 0;
   }
@@ -229,11 +223,16 @@ class BodyReader {
   }
 
  private:
+  // A fixed-size copy compiles to one load, where a copy of type_size(t)
+  // bytes called memcpy for each value.
   template <class T>
-  static double load(const std::array<unsigned char, 8>& raw) {
-    T value;
-    std::memcpy(&value, raw.data(), sizeof(T));
-    return double(value);
+  double take() {
+    std::array<unsigned char, sizeof(T)> raw;
+    std::memcpy(raw.data(), bytes_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    if ((format_ == Format::BigEndian) != (std::endian::native == std::endian::big))
+      std::reverse(raw.begin(), raw.end());
+    return double(std::bit_cast<T>(raw));
   }
 
   double read_ascii(Type t) {

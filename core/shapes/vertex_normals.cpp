@@ -27,12 +27,23 @@ std::vector<Vec3> smooth_vertex_normals(const MeshData& mesh) {
     if (!(length > 0)) continue;
     // cross(e0, e2) points against cross(e0, -e2), the face's orientation.
     for (double& c : n) c /= -length;
+    // The angles add up to pi, so the largest (at the corner facing the
+    // longest edge, at least pi / 3) is pi less the other two, as accurate
+    // as they are: two atan2 calls a triangle instead of three.
+    double edge2[3];
+    for (int k = 0; k < 3; ++k) edge2[k] = e[k][0] * e[k][0] + e[k][1] * e[k][1] + e[k][2] * e[k][2];
+    const int facing = edge2[0] >= edge2[1] ? (edge2[0] >= edge2[2] ? 0 : 2) : (edge2[1] >= edge2[2] ? 1 : 2);
+    const int largest = (facing + 2) % 3;  // edge k joins corners k and k + 1; corner k + 2 faces it
+    double angle[3], others = 0;
     for (int k = 0; k < 3; ++k) {
-      const double* out = e[k];
+      if (k == largest) continue;
       const double in[3] = {-e[(k + 2) % 3][0], -e[(k + 2) % 3][1], -e[(k + 2) % 3][2]};
-      const double angle = angle_between(out, in);
-      for (int a = 0; a < 3; ++a) sums[3 * v[k] + a] += angle * n[a];
+      angle[k] = angle_between(e[k], in);
+      others += angle[k];
     }
+    angle[largest] = M_PI - others;
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) sums[3 * v[k] + a] += angle[k] * n[a];
   }
   std::vector<Vec3> normals(mesh.positions.size());
   for (size_t i = 0; i < normals.size(); ++i) {

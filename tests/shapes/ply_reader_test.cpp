@@ -81,6 +81,35 @@ TEST(PlyReader, ReadsBothBinaryByteOrders) {
   }
 }
 
+// Each binary type keeps its sign and width: vertices whose coordinates
+// are stored as signed and unsigned integers of every size.
+TEST(PlyReader, ReadsEveryBinaryTypeWithItsSignInBothByteOrders) {
+  for (bool big_endian : {false, true}) {
+    std::string out = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                      " 1.0\nelement vertex 2\nproperty char x\nproperty short y\nproperty int z\n"
+                      "property uchar u\nproperty ushort v\nproperty uint extra\nend_header\n";
+    for (int sign : {-1, 1}) {
+      put<int8_t>(out, int8_t(sign * 100), big_endian);
+      put<int16_t>(out, int16_t(sign * 30000), big_endian);
+      put<int32_t>(out, sign * 2000000000, big_endian);
+      put<uint8_t>(out, 200, big_endian);
+      put<uint16_t>(out, 60000, big_endian);
+      put<uint32_t>(out, 4000000000u, big_endian);
+    }
+    const MeshData mesh = read_ply(out);
+    ASSERT_EQ(mesh.positions.size(), 2u) << big_endian;
+    for (int i : {0, 1}) {
+      const float sign = i == 0 ? -1 : 1;
+      EXPECT_EQ(mesh.positions[i].x, sign * 100) << big_endian;
+      EXPECT_EQ(mesh.positions[i].y, sign * 30000) << big_endian;
+      EXPECT_EQ(mesh.positions[i].z, sign * 2e9f) << big_endian;
+      ASSERT_EQ(mesh.uvs.size(), 2u);
+      EXPECT_EQ(mesh.uvs[i].x, 200) << big_endian;
+      EXPECT_EQ(mesh.uvs[i].y, 60000) << big_endian;
+    }
+  }
+}
+
 TEST(PlyReader, EveryTruncationOfABinaryFileIsAnErrorNotACrash) {
   const std::string whole = binary_quad(false);
   for (size_t n = 0; n < whole.size(); ++n) EXPECT_NE(ply_error(whole.substr(0, n)), "no error") << n;

@@ -41,6 +41,23 @@ TEST(VertexNormals, AFlatSurfaceKeepsItsNormal) {
   }
 }
 
+// Two needles meet at vertex 0 with angles of 1e-14 and 2e-14 there, in
+// the planes z = 0 and y = 0: the tiny angles are their weights, so
+// the normal leans twice as far to the second's normal, (0, 1, 0), as to
+// the first's, (0, 0, 1). An angle found as pi less the other two would be
+// off by up to 2e-16 absolute, a hundredth of these.
+TEST(VertexNormals, NeedleTrianglesKeepTheirTinyAnglesAsWeights) {
+  MeshData mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1e-14f, 0}, {0, 0, 1}, {2e-14f, 0, 1}};
+  mesh.indices = {0, 1, 2, 0, 3, 4};
+  const auto normals = smooth_vertex_normals(mesh);
+  const double a1 = std::atan2(double(1e-14f), 1.0), a2 = std::atan2(double(2e-14f), 1.0);
+  const double length = std::sqrt(a1 * a1 + a2 * a2);
+  EXPECT_NEAR(normals[0].x, 0, 1e-6);
+  EXPECT_NEAR(normals[0].y, a2 / length, 1e-6);
+  EXPECT_NEAR(normals[0].z, a1 / length, 1e-6);
+}
+
 TEST(VertexNormals, DegenerateTrianglesAndUnusedVerticesGiveZero) {
   MeshData mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 5, 5}};
