@@ -333,6 +333,9 @@ MeshData read_ply(std::string_view bytes) {
       if (complete(layout.normal)) mesh.normals.reserve(element.count);
       if (complete(layout.uv)) mesh.uvs.reserve(element.count);
     }
+    // At least a triangle a face; the count was checked against the bytes
+    // left above, so a lying header cannot reserve much.
+    if (is_face) mesh.indices.reserve(mesh.indices.size() + 3 * element.count);
     if (is_face)
       for (size_t i = 0; i < element.properties.size(); ++i)
         if ((element.properties[i].name == "vertex_indices" || element.properties[i].name == "vertex_index") &&
