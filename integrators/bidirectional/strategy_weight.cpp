@@ -30,45 +30,36 @@ float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std
     if (t >= 2) camera_before_end = scatter_density(scene, &light[s - 1], camera[t - 1], camera[t - 2]);
   }
 
-  const auto vertex = [&](int i) -> const PathVertex& { return i < s ? light[i] : camera[k - i]; };
-  // Density of x_i sampled from the light side, and from the camera side.
-  const auto from_light = [&](int i) {
-    if (i < s) return light[i].pdf_fwd;
-    if (i == s) return camera_end;
-    if (i == s + 1) return camera_before_end;
-    return camera[k - i].pdf_rev;
-  };
-  const auto from_camera = [&](int i) {
-    if (i >= s) return camera[k - i].pdf_fwd;
-    if (i == s - 1) return light_end;
-    if (i == s - 2) return light_before_end;
-    return light[i].pdf_rev;
-  };
-  // Whether the path scatters at x_i through a delta lobe; the connection's
-  // endpoints scatter through the connection, never a delta lobe.
-  const auto scatters_delta = [&](int i) { return i != s - 1 && i != s && vertex(i).delta; };
-  const PathVertex& origin = vertex(0);
-  // Whether strategy s' (connecting x_{s'-1} to x_{s'}) could sample the path.
-  const auto possible = [&](int sp) {
-    if (sp == 0) return !origin.delta_light;
-    if (sp == k && k == 1) return !origin.environment && !origin.delta_light;
-    const bool left = sp - 1 == 0 || !scatters_delta(sp - 1);
-    const bool right = sp == k || !scatters_delta(sp);
-    return left && right;
-  };
+  const PathVertex& origin = s > 0 ? light[0] : camera[k];
   const auto h = [&](float r) { return heuristic == MisHeuristic::Power ? r * r : r; };
-
   // Ratios of each other strategy's density to this one's, walking away
-  // from the connection one vertex at a time.
+  // from the connection one vertex at a time. Strategy s' joins x_{s'-1}
+  // to x_{s'}, so it is possible unless one of them scatters through a
+  // delta lobe (the connection's own endpoints never do) or, for s' = 0, the
+  // path starts on a delta light; a one-segment path from the camera to an
+  // environment light has no strategy s' = 1.
   float sum = 1, r = 1;
-  for (int sp = s + 1; sp <= k; ++sp) {
-    r *= remap(from_light(sp - 1)) / remap(from_camera(sp - 1));
-    if (possible(sp)) sum += h(r);
+  // Strategies s' > s: x_i = camera[k - i] for i >= s, whose density from
+  // the light side is the connection's for i = s and s + 1.
+  for (int i = s; i < k; ++i) {
+    const int j = k - i;
+    const float from_light = i == s ? camera_end : i == s + 1 ? camera_before_end : camera[j].pdf_rev;
+    r *= remap(from_light) / remap(camera[j].pdf_fwd);
+    const int sp = i + 1;
+    const bool possible = sp == k && k == 1
+                              ? !origin.environment && !origin.delta_light
+                              : (i == 0 || i == s || !camera[j].delta) && (sp == k || !camera[j - 1].delta);
+    if (possible) sum += h(r);
   }
+  // Strategies s' < s: x_i = light[i], whose density from the camera side
+  // is the connection's for i = s - 1 and s - 2.
   r = 1;
   for (int sp = s - 1; sp >= 0; --sp) {
-    r *= remap(from_camera(sp)) / remap(from_light(sp));
-    if (possible(sp)) sum += h(r);
+    const float from_camera = sp == s - 1 ? light_end : sp == s - 2 ? light_before_end : light[sp].pdf_rev;
+    r *= remap(from_camera) / remap(light[sp].pdf_fwd);
+    const bool possible =
+        sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
+    if (possible) sum += h(r);
   }
   return 1 / sum;
 }
