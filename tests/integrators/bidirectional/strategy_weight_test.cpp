@@ -8,7 +8,8 @@
 // densities the connection overrides) must also equal the recomputed one.
 // Both are checked to single-precision accuracy; the scenes cover area,
 // point, directional and environment lights and diffuse, glossy and delta
-// surfaces. Which strategies are possible is decided from the emitter
+// surfaces, and smooth plastic, whose vertices may leave through their delta
+// coat yet join connections through the diffuse base. Which strategies are possible is decided from the emitter
 // itself, never from the vertex's own flags.
 
 #include "integrators/bidirectional/strategy_weight.h"
@@ -40,6 +41,8 @@ const char* const kMixedScene =
     "<bsdf type='roughconductor'><float name='alpha' value='0.2'/></bsdf></shape>"
     "<shape type='sphere'><point name='center' x='0' y='0.8' z='0.3'/><float name='radius' value='0.3'/>"
     "<bsdf type='dielectric'/></shape>"
+    "<shape type='sphere'><point name='center' x='-0.2' y='-0.9' z='0.25'/><float name='radius' value='0.25'/>"
+    "<bsdf type='plastic'/></shape>"
     "<shape type='sphere'><point name='center' x='0.5' y='-0.5' z='2'/><float name='radius' value='0.2'/>"
     "<emitter type='area'><rgb name='radiance' value='10'/></emitter></shape>"
     "<emitter type='point'><point name='position' x='-1' y='-1' z='2'/><rgb name='intensity' value='5'/></emitter>"
