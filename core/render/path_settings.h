@@ -16,11 +16,13 @@ class Properties;
 //                    0 renders black, 1 shows emitters only, 2 direct light only
 //   rr_depth         path vertices before Russian roulette may end a path
 //   rr_max_survival  upper bound on the survival probability
+//   rr_threshold     throughput below which roulette may end a camera path
 //   hide_emitters    emitters seen directly by the camera appear black
 struct PathSettings {
   int64_t max_depth = -1;
   int64_t rr_depth = 5;
   float rr_max_survival = 0.95f;
+  float rr_threshold = 0.1f;
   bool hide_emitters = false;
 };
 

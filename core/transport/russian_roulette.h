@@ -10,11 +10,16 @@ namespace caustica {
 
 // The one Russian-roulette policy of every walk (camera paths, light paths,
 // photons). After scattering at a vertex `segments` segments from the
-// walk's origin, with segments >= rr_depth, the walk survives with
-// probability
-//   q = min(max_component(throughput) * eta_scale, rr_max_survival)
+// walk's origin, with segments >= rr_depth, a walk whose
+//   t = max_component(throughput) * eta_scale
+// has fallen below rr_threshold survives with probability
+//   q = min(t, rr_max_survival)
 // and a survivor's weights are divided by q, which keeps every estimator
-// unbiased. `throughput` is the product of the scattering weights
+// unbiased; a walk at or above the threshold always goes on. Rouletting
+// walks that still carry much of what they started with (Mitsuba's rule,
+// an infinite threshold) multiplies the rare large contributions they go
+// on to find: on the glass box, camera paths that reach the light through
+// the sphere. `throughput` is the product of the scattering weights
 // f |cos| / pdf alone (what the emitter or the camera put in does not
 // count, so light and camera paths are judged alike); `eta_scale` is the
 // product of eta^2 over refractions in radiance mode, undoing the 1/eta^2
@@ -23,13 +28,18 @@ namespace caustica {
 struct RussianRoulette {
   int64_t rr_depth = 5;
   float rr_max_survival = 0.95f;
+  float rr_threshold = 0.1f;
 
-  // Draws one number where roulette applies, none before rr_depth.
+  // Draws one number from rr_depth on, none before, whether or not the walk
+  // is below the threshold: each dimension of a sample keeps its meaning.
   bool survives(int64_t segments, const Color& throughput, float eta_scale, Sampler& sampler, float* q) const {
     *q = 1;
     if (segments < rr_depth) return true;
-    *q = std::min(throughput.max_component() * eta_scale, rr_max_survival);
-    return sampler.next_1d() < *q;
+    const float u = sampler.next_1d();
+    const float t = throughput.max_component() * eta_scale;
+    if (!(t < rr_threshold)) return true;
+    *q = std::min(t, rr_max_survival);
+    return u < *q;
   }
 };
 

@@ -2,11 +2,13 @@
 // samples an emitter and the BSDF, and both strategies are combined by
 // multiple importance sampling (power heuristic).
 //
-// Russian roulette policy: from rr_depth on, a path survives with probability
-// q = min(max_component(throughput) * eta_scale, rr_max_survival), and the
-// survivors' throughput is divided by q, which keeps the estimator unbiased.
-// eta_scale undoes the radiance scaling of refraction, so a path is not
-// killed merely for having entered glass.
+// Russian roulette policy: from rr_depth on, a path whose
+// t = max_component(throughput) * eta_scale has fallen below rr_threshold
+// survives with probability q = min(t, rr_max_survival), and the
+// survivors' throughput is divided by q, which keeps the estimator unbiased;
+// paths at or above the threshold go on. eta_scale undoes the radiance
+// scaling of refraction, so a path is not killed merely for having entered
+// glass.
 //
 //   <integrator type="path"><integer name="max_depth" value="8"/></integrator>
 

@@ -73,6 +73,19 @@ TEST(ClosedSphere, PathWithRussianRouletteIsUnbiased) {
   expect_radiance("<integrator type='path'><integer name='rr_depth' value='1'/></integrator>", 2.0, 64, 1);
 }
 
+// Roulette at any throughput from the first bounce (Mitsuba's rule), and
+// only below a threshold the walls' albedo reaches after one bounce.
+TEST(ClosedSphere, PathWithRouletteAtAnyThroughputIsUnbiased) {
+  expect_radiance(
+      "<integrator type='path'><integer name='rr_depth' value='1'/>"
+      "<float name='rr_threshold' value='1e30'/></integrator>",
+      2.0, 64, 7);
+  expect_radiance(
+      "<integrator type='path'><integer name='rr_depth' value='1'/>"
+      "<float name='rr_threshold' value='0.6'/></integrator>",
+      2.0, 64, 8);
+}
+
 TEST(ClosedSphere, PathWithDefaultRouletteIsUnbiased) { expect_radiance("<integrator type='path'/>", 2.0, 64, 2); }
 
 TEST(ClosedSphere, PathWithoutRouletteMatchesTheTruncatedSeries) {

@@ -81,7 +81,8 @@ TEST(SceneLoader, EveryElementOfTheSubset) {
   EXPECT_FALSE(scene->sensor().film()->half_float());
   EXPECT_FLOAT_EQ(scene->sensor().film()->filter().radius(), 1.5f);
   EXPECT_EQ(scene->sensor().sampler()->sample_count(), 3u);
-  EXPECT_EQ(scene.integrator->describe(), "path max_depth=7 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
+  EXPECT_EQ(scene.integrator->describe(),
+            "path max_depth=7 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=true");
   EXPECT_EQ(scene->shapes()[0]->bsdf(), scene->shapes()[3]->bsdf());  // one object through ref
   EXPECT_EQ(scene->shapes()[1]->bsdf()->lobes(), kDiffuseReflection);
   EXPECT_NE(scene->shapes()[2]->emitter(), nullptr);
@@ -374,9 +375,10 @@ TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
 TEST(SceneLoader, IntegratorSpecWithParameters) {
   const auto bdpt = make_integrator("bdpt:max_depth=3,mis=balance,strategy_layers=2");
   EXPECT_EQ(bdpt->describe(),
-            "bdpt max_depth=3 rr_depth=5 rr_max_survival=0.950000 hide_emitters=false mis=balance strategy_layers=2");
+            "bdpt max_depth=3 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=false "
+            "mis=balance strategy_layers=2");
   EXPECT_EQ(make_integrator("path:hide_emitters=true")->describe(),
-            "path max_depth=-1 rr_depth=5 rr_max_survival=0.950000 hide_emitters=true");
+            "path max_depth=-1 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=true");
 }
 
 TEST(SceneLoader, BadIntegratorSpecs) {

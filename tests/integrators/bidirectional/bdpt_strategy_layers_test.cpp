@@ -73,6 +73,10 @@ TEST(BdptStrategyLayers, BadParameters) {
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='bdpt'>\n"
                                "<float name='rr_max_survival' value='0'/></integrator></scene>"),
               HasSubstr("test.xml:2: parameter 'rr_max_survival' of integrator 'bdpt': must be in (0, 1]"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='path'>\n"
+                               "<float name='rr_threshold' value='0'/></integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'rr_threshold' of integrator 'path': must be positive (1e30 for "
+                        "roulette at any throughput)"));
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ template <class Expected>
 void expect_first_vertex_densities(const LoadedScene& scene, Expected&& expected) {
   const PluginInfo* info = Registry::instance().find("sampler", "independent");
   auto sampler = std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"test", 1})))->clone();
-  const PathSettings settings{1, 5, 0.95f, false};
+  const PathSettings settings{1, 5, 0.95f, 0.1f, false};
   std::mt19937 rng(4);
   std::uniform_real_distribution<float> u(0, 1);
   std::vector<PathVertex> path;

@@ -126,7 +126,7 @@ struct Tally {
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
   auto sampler = make_sampler();
-  const PathSettings settings{8, 5, 0.95f, false};
+  const PathSettings settings{8, 5, 0.95f, 0.1f, false};
   const Film& film = *scene.sensor().film();
   std::vector<PathVertex> camera, light;
   for (int i = 0; i < samples; ++i) {
