@@ -61,7 +61,11 @@ TEST(Photon, AgreesWithBdptOnTheCausticAndWithPathElsewhere) {
   const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, int(regions.size())), kRuns - 1);
   const auto photon = glass_box("photon:photons=20000");
   uint64_t non_finite = 0;
-  const auto ph = test::estimate_regions(photon, regions, 32, kRuns, 100, &non_finite);
+  // 256 rounds a run: after 32 the estimate seen through the sphere is
+  // skewed (about half the runs near 0.100, the rest up to 0.13 around a
+  // mean of 0.109), so eight runs could agree closely among themselves and
+  // still miss the mean by several of their own standard errors.
+  const auto ph = test::estimate_regions(photon, regions, 256, kRuns, 100, &non_finite);
   EXPECT_EQ(non_finite, 0u);
   const auto bdpt = test::estimate_regions(glass_box("bdpt"), {kCaustic}, 32, kRuns, 200);
   const auto path = test::estimate_regions(glass_box("path"), regions, 512, kRuns, 300);
