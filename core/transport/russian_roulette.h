@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "core/math/color.h"
@@ -31,13 +32,15 @@ struct RussianRoulette {
   float rr_threshold = 0.1f;
 
   // Draws one number from rr_depth on, none before, whether or not the walk
-  // is below the threshold: each dimension of a sample keeps its meaning.
+  // is below the threshold: each dimension of a sample keeps its meaning. A
+  // throughput that is not finite always meets roulette (NaN ends the walk),
+  // so that a broken path cannot go on for ever in a closed scene.
   bool survives(int64_t segments, const Color& throughput, float eta_scale, Sampler& sampler, float* q) const {
     *q = 1;
     if (segments < rr_depth) return true;
     const float u = sampler.next_1d();
     const float t = throughput.max_component() * eta_scale;
-    if (!(t < rr_threshold)) return true;
+    if (t >= rr_threshold && std::isfinite(t)) return true;
     *q = std::min(t, rr_max_survival);
     return u < *q;
   }

@@ -81,5 +81,20 @@ TEST(RussianRoulette, MaxSurvivalBoundsQAndAnInfiniteThresholdRoulettesEverythin
   EXPECT_EQ(q, 0.95f);
 }
 
+// A throughput that is not finite meets roulette whatever the threshold:
+// NaN ends the walk, an infinite one survives with rr_max_survival, so no
+// broken path walks for ever.
+TEST(RussianRoulette, ThroughputsThatAreNotFiniteAlwaysMeetRoulette) {
+  auto sampler = test::make_sampler("independent");
+  const RussianRoulette roulette{1, 0.95f, 0.1f};
+  for (int i = 0; i < 100; ++i) {
+    sampler->start_sample(SampleKey::camera({i, 0}), 0, 1);
+    float q = -1;
+    EXPECT_FALSE(roulette.survives(3, Color(std::nanf("")), 1, *sampler, &q));
+    roulette.survives(3, Color(std::numeric_limits<float>::infinity()), 1, *sampler, &q);
+    EXPECT_EQ(q, 0.95f);
+  }
+}
+
 }  // namespace
 }  // namespace caustica
