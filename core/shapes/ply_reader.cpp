@@ -333,16 +333,17 @@ MeshData read_ply(std::string_view bytes) {
       if (complete(layout.normal)) mesh.normals.reserve(element.count);
       if (complete(layout.uv)) mesh.uvs.reserve(element.count);
     }
-    // At least a triangle a face; the count was checked against the bytes
-    // left above, so a lying header cannot reserve much.
-    if (is_face) mesh.indices.reserve(mesh.indices.size() + 3 * element.count);
-    if (is_face)
+    if (is_face) {
+      // At least a triangle a face; the count was checked against the bytes
+      // left above, so a lying header cannot reserve much.
+      mesh.indices.reserve(mesh.indices.size() + 3 * element.count);
       for (size_t i = 0; i < element.properties.size(); ++i)
         if ((element.properties[i].name == "vertex_indices" || element.properties[i].name == "vertex_index") &&
             element.properties[i].count_type) {
           if (!is_integer(element.properties[i].type)) throw PlyError("face vertex indices must be integers");
           face_list = int(i);
         }
+    }
 
     std::vector<double> values(element.properties.size());
     std::vector<uint32_t> polygon;

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "tests/support/chi2.h"
+#include "tests/support/image_mean.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
@@ -45,17 +46,9 @@ struct MeanEstimate {
 // channels of a pixel are correlated (in a grey scene, identical), so the
 // error of their mean is bounded by the mean of their errors.
 MeanEstimate image_mean(const FilmBuffer& film) {
-  const auto img = film.resolve();
-  const auto var = film.variance();
-  double sum = 0, var_sum[3] = {0, 0, 0};
-  for (size_t i = 0; i < img.size(); ++i) {
-    sum += img[i];
-    var_sum[i % 3] += var[i];
-  }
-  const double pixels = double(img.size() / 3);
-  double standard_error = 0;
-  for (double v : var_sum) standard_error += std::sqrt(v) / pixels / 3;
-  return {sum / img.size(), standard_error};
+  const test::ImageMean m = test::image_mean(film);
+  return {(m.mean[0] + m.mean[1] + m.mean[2]) / 3,
+          (m.standard_error[0] + m.standard_error[1] + m.standard_error[2]) / 3};
 }
 
 void expect_radiance(const std::string& integrator, double expected, uint32_t spp, uint64_t seed) {
