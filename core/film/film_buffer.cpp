@@ -16,11 +16,7 @@ FilmBuffer::FilmBuffer(int width, int height, std::vector<std::string> channels,
   const size_t pixels = size_t(width) * height;
   weighted_sum_.assign(pixels * channels_.size(), {});
   weight_sum_.assign(pixels, {});
-  if (moments == Moments::Kept) {
-    weight2_sum_.assign(pixels, {});
-    w2x_.assign(pixels * 3, {});
-    w2x2_.assign(pixels * 3, {});
-  }
+  if (moments == Moments::Kept) moments_.assign(pixels, {});
   count_.assign(pixels, 0);
 }
 
@@ -38,10 +34,11 @@ void FilmBuffer::add_sample(SampleId id, std::span<const float> values, float we
   count_[p] += samples;
   if (!keeps_moments()) return;
   const double w2 = double(weight) * weight;
-  weight2_sum_[p].add(w2);
+  MomentSums& m = moments_[p];
+  m.w2 += w2;
   for (size_t c = 0; c < std::min<size_t>(3, values.size()); ++c) {
-    w2x_[p * 3 + c].add(w2 * values[c]);
-    w2x2_[p * 3 + c].add(w2 * values[c] * values[c]);
+    m.w2x[c] += w2 * values[c];
+    m.w2x2[c] += w2 * values[c] * values[c];
   }
 }
 
@@ -105,7 +102,7 @@ void FilmBuffer::resolve_pixel(size_t p, float* out) const {
 
 std::vector<float> FilmBuffer::variance() const {
   if (!keeps_moments()) throw std::logic_error("variance() of a film that keeps no moments");
-  std::vector<float> out(w2x_.size());
+  std::vector<float> out(moments_.size() * 3);
   for (size_t p = 0; p < count_.size(); ++p) variance_pixel(p, &out[p * 3]);
   return out;
 }
@@ -117,8 +114,8 @@ void FilmBuffer::variance_pixel(size_t p, float* out) const {
     out[c] = 0;
     if (n < 2 || W == 0 || c >= nc) continue;
     const double mean = weighted_sum_[p * nc + c].value() / W;
-    const double spread =
-        w2x2_[p * 3 + c].value() - 2 * mean * w2x_[p * 3 + c].value() + mean * mean * weight2_sum_[p].value();
+    const MomentSums& m = moments_[p];
+    const double spread = m.w2x2[c] - 2 * mean * m.w2x[c] + mean * mean * m.w2;
     // The sums have a double's range and cannot overflow; a float can, so the
     // variance of radiance beyond about 1e19 is clamped to the largest one.
     const double variance = std::max(0.0, spread) / (W * W) * n / (n - 1);
@@ -138,6 +135,16 @@ void split_double(double d, float* out) {
 
 double join_floats(const float* in) { return double(in[0]) + double(in[1]) + double(in[2]); }
 
+// The two kinds of sum a film holds, alike for exporting and adding.
+double value_of(const ExactSum& s) { return s.value(); }
+double value_of(double s) { return s; }
+double rest_of(const ExactSum& s) { return s.rest(); }
+double rest_of(double) { return 0; }
+void add_parts(ExactSum& s, double value, double rest) { s.add(ExactSum::from_parts(value, rest)); }
+// An exported moment's rest is 0; an older file's is below half an ulp of
+// its value, so the value is the sum to a double's precision.
+void add_parts(double& s, double value, double) { s += value; }
+
 // The rest of a sum is below 2^-53 of its value: scaled up, it stays in the
 // range of floats wherever the value does.
 constexpr int kRestScale = 64;
@@ -150,9 +157,10 @@ void FilmBuffer::for_each_sum(Self& film, size_t p, F&& f) {
   for (size_t c = 0; c < nc; ++c) f(film.weighted_sum_[p * nc + c]);
   f(film.weight_sum_[p]);
   if (film.keeps_moments()) {
-    f(film.weight2_sum_[p]);
-    for (size_t c = 0; c < 3; ++c) f(film.w2x_[p * 3 + c]);
-    for (size_t c = 0; c < 3; ++c) f(film.w2x2_[p * 3 + c]);
+    auto& m = film.moments_[p];
+    f(m.w2);
+    for (auto& sum : m.w2x) f(sum);
+    for (auto& sum : m.w2x2) f(sum);
   }
   if (!film.splat_sum_.empty())
     for (size_t c = 0; c < nc; ++c) f(film.splat_sum_[p * nc + c]);
@@ -185,9 +193,9 @@ std::vector<float> FilmBuffer::export_raw() const {
 }
 
 void FilmBuffer::export_raw_pixel(size_t p, float* out) const {
-  for_each_sum(*this, p, [&](const ExactSum& sum) {
-    split_double(sum.value(), out);
-    split_double(std::ldexp(sum.rest(), kRestScale), out + 3);
+  for_each_sum(*this, p, [&](const auto& sum) {
+    split_double(value_of(sum), out);
+    split_double(std::ldexp(rest_of(sum), kRestScale), out + 3);
     out += 6;
   });
   *out = float(count_[p]);
@@ -199,8 +207,8 @@ void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {
   const size_t per_pixel = raw_channels("").size();
   for (size_t p = 0; p < count_.size(); ++p) {
     const float* in = &raw[p * per_pixel];
-    for_each_sum(*this, p, [&](ExactSum& sum) {
-      sum.add(ExactSum::from_parts(join_floats(in), std::ldexp(join_floats(in + 3), -kRestScale)));
+    for_each_sum(*this, p, [&](auto& sum) {
+      add_parts(sum, join_floats(in), std::ldexp(join_floats(in + 3), -kRestScale));
       in += 6;
     });
     count_[p] += uint32_t(*in);
@@ -223,9 +231,15 @@ void FilmBuffer::add(const FilmBuffer& other) {
   };
   add_all(weighted_sum_, other.weighted_sum_);
   add_all(weight_sum_, other.weight_sum_);
-  add_all(weight2_sum_, other.weight2_sum_);
-  add_all(w2x_, other.w2x_);
-  add_all(w2x2_, other.w2x2_);
+  for (size_t p = 0; p < moments_.size(); ++p) {
+    MomentSums& m = moments_[p];
+    const MomentSums& o = other.moments_[p];
+    m.w2 += o.w2;
+    for (size_t c = 0; c < 3; ++c) {
+      m.w2x[c] += o.w2x[c];
+      m.w2x2[c] += o.w2x2[c];
+    }
+  }
   if (other.has_splats()) enable_splats();
   add_all(splat_sum_, other.splat_sum_);
   splat_paths_per_pixel_ += other.splat_paths_per_pixel_;
@@ -234,8 +248,9 @@ void FilmBuffer::add(const FilmBuffer& other) {
 }
 
 void FilmBuffer::clear() {
-  for (std::vector<ExactSum>* sums : {&weighted_sum_, &weight_sum_, &weight2_sum_, &w2x_, &w2x2_, &splat_sum_})
+  for (std::vector<ExactSum>* sums : {&weighted_sum_, &weight_sum_, &splat_sum_})
     std::fill(sums->begin(), sums->end(), ExactSum{});
+  std::fill(moments_.begin(), moments_.end(), MomentSums{});
   std::fill(count_.begin(), count_.end(), 0u);
   splat_paths_per_pixel_ = 0;
   dropped_ = std::make_unique<DropLog>();
@@ -247,7 +262,7 @@ std::vector<double> FilmBuffer::pack() const {
                           double(first.pixel.x), double(first.pixel.y),          double(first.index)};
   out.reserve(kPackHeader + count_.size() * ((raw_channels("").size() - 1) / 3 + 1));
   for (size_t p = 0; p < count_.size(); ++p) {
-    for_each_sum(*this, p, [&](const ExactSum& sum) { out.insert(out.end(), {sum.value(), sum.rest()}); });
+    for_each_sum(*this, p, [&](const auto& sum) { out.insert(out.end(), {value_of(sum), rest_of(sum)}); });
     out.push_back(count_[p]);
   }
   return out;
@@ -269,9 +284,9 @@ void FilmBuffer::add_packed(std::span<const double> packed) {
   const double* in = packed.data() + kPackHeader;
   for (size_t p = 0; p < count_.size(); ++p) {
     size_t k = 0;
-    for_each_sum(*this, p, [&](ExactSum& sum) {
+    for_each_sum(*this, p, [&](auto& sum) {
       if (k++ >= sums) return;
-      sum.add(ExactSum::from_parts(in[0], in[1]));
+      add_parts(sum, in[0], in[1]);
       in += 2;
     });
     count_[p] += uint32_t(*in++);

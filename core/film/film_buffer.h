@@ -69,17 +69,17 @@ class FilmBuffer {
   // not part of it. Only for a film that keeps its moments.
   std::vector<float> variance() const;
   void variance_pixel(size_t pixel, float* out) const;
-  bool keeps_moments() const { return !weight2_sum_.empty(); }
+  bool keeps_moments() const { return !moments_.empty(); }
   uint32_t sample_count(Vec2i pixel) const { return count_[index(pixel)]; }
 
   // The sums behind resolve() and variance() as float channels named
   // prefix + "sum.R.0" ..., for storing a render so that renders of
   // disjoint sample ranges merge into the film of one render of them all.
-  // Each sum (an ExactSum) becomes six floats: three (.0, .1, .2) adding up
-  // to its value, three (.3, .4, .5) to its rest scaled by 2^64, exactly for
-  // magnitudes between 1e-24 and 1e35; the sample count is one channel.
-  // Sums are exact, so merged films equal the film of all their samples bit
-  // for bit.
+  // Each sum becomes six floats: three (.0, .1, .2) adding up to its value,
+  // three (.3, .4, .5) to its rest (an ExactSum's; 0 for a moment) scaled by
+  // 2^64, exactly for magnitudes between 1e-24 and 1e35; the sample count is
+  // one channel. The beauty's sums are exact, so merged films equal the film
+  // of all their samples bit for bit, but for the variance (see moments_).
   std::vector<std::string> raw_channels(const std::string& prefix) const;
   // Pixel-interleaved, raw_channels().size() values per pixel.
   std::vector<float> export_raw() const;
@@ -89,7 +89,8 @@ class FilmBuffer {
   void add_raw(std::span<const float> raw, uint64_t splat_paths);
 
   // Adds everything `other` holds, a film of the same size, channels and
-  // moments: the result is the film of both films' samples, bit for bit.
+  // moments: the result is the film of both films' samples (bit for bit but
+  // for the variance's moments).
   void add(const FilmBuffer& other);
   // Back to no samples, keeping the memory (and the splat image, if any).
   void clear();
@@ -97,7 +98,7 @@ class FilmBuffer {
   // Everything the film holds (sums, counts, splat paths, dropped samples)
   // as doubles, for another process to add to a film of the same size,
   // channels and moments with add_packed: the result is the film of both
-  // films' samples, bit for bit.
+  // films' samples, as add() makes it.
   std::vector<double> pack() const;
   // Throws std::invalid_argument when `packed` does not fit this film.
   void add_packed(std::span<const double> packed);
@@ -114,7 +115,14 @@ class FilmBuffer {
   // Exact sums, so that no order or grouping of the samples changes a bit.
   std::vector<ExactSum> weighted_sum_;  // channels per pixel
   std::vector<ExactSum> weight_sum_;
-  std::vector<ExactSum> weight2_sum_, w2x_, w2x2_;  // sums of w^2, w^2 x and w^2 x^2 (three); empty without moments
+  // The variance's sums of w^2, w^2 x and w^2 x^2 (three each) are plain
+  // doubles: exact ones would cost 56 more bytes a pixel, and a variance
+  // estimate gains nothing from its last bit. Merged films' variances so
+  // agree with one render's to rounding, not bit for bit.
+  struct MomentSums {
+    double w2 = 0, w2x[3] = {}, w2x2[3] = {};
+  };
+  std::vector<MomentSums> moments_;  // per pixel; empty without moments
   std::vector<uint32_t> count_;
   std::vector<ExactSum> splat_sum_;  // channels per pixel, allocated by the first splat
   uint64_t splat_paths_per_pixel_ = 0;
