@@ -30,6 +30,11 @@ class SurfaceBsdf {
 
   Color eval(Vec3 wo_world, Vec3 wi_world) const;
   float pdf(Vec3 wo_world, Vec3 wi_world) const;
+  // pdf(wo, wi) and pdf(wi, wo), the frame transforms done once.
+  struct PdfPair {
+    float forward, backward;
+  };
+  PdfPair pdfs(Vec3 wo_world, Vec3 wi_world) const;
   // The sample's wi is in world space.
   std::optional<BsdfSample> sample(Vec3 wo_world, float u_lobe, Vec2 u) const;
   Color albedo(Vec3 wo_world) const { return bsdf_->albedo(ctx_, frame_.to_local(wo_world)); }

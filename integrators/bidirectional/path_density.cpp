@@ -73,4 +73,19 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
       cur, next, cur.in_medium() ? cur.medium->phase().eval(w_prev, w_next) : cur.bsdf->pdf(w_prev, w_next));
 }
 
+DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next) {
+  if (!cur.is_surface() && !cur.in_medium()) throw std::logic_error("a subpath's end vertex does not scatter");
+  const Vec3 w_prev = direction_to(cur, prev), w_next = direction_to(cur, next);
+  float forward, backward;
+  if (cur.in_medium()) {
+    forward = cur.medium->phase().eval(w_prev, w_next);
+    backward = cur.medium->phase().eval(w_next, w_prev);
+  } else {
+    const auto pdfs = cur.bsdf->pdfs(w_prev, w_next);
+    forward = pdfs.forward;
+    backward = pdfs.backward;
+  }
+  return {solid_angle_to_area(cur, next, forward), solid_angle_to_area(cur, prev, backward)};
+}
+
 }  // namespace caustica

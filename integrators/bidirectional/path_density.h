@@ -18,6 +18,15 @@ class Scene;
 // they still sum to one over the strategies.
 float scatter_density(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next);
 
+// For a scattering vertex `cur` between `prev` and `next`: the density of
+// `next` sampled from `cur` reached from `prev`, and that of `prev` sampled
+// from `cur` reached from `next`; each what scatter_density gives, the
+// directions and the BSDF's frame transforms shared.
+struct DensityPair {
+  float to_next, to_prev;
+};
+DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next);
+
 // Density of a light subpath starting at the light vertex `v` (or the
 // emitting surface vertex, or the environment direction): the light
 // selection probability times the emitter's position density (its

@@ -19,15 +19,24 @@ float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std
   // The densities the connection decides: for x_{s-1} and x_{s-2} as the
   // camera side would sample them, for x_s and x_{s+1} as the light side would.
   float light_end = 0, light_before_end = 0, camera_end = 0, camera_before_end = 0;
-  const PathVertex* camera_prev = t >= 2 ? &camera[t - 2] : nullptr;
   if (s == 0) {
     camera_end = light_origin_density(scene, camera[t - 1]);
     if (t >= 2) camera_before_end = emission_density(camera[t - 1], camera[t - 2]);
   } else {
-    light_end = scatter_density(scene, camera_prev, camera[t - 1], light[s - 1]);
-    if (s >= 2) light_before_end = scatter_density(scene, &camera[t - 1], light[s - 1], light[s - 2]);
-    camera_end = scatter_density(scene, s >= 2 ? &light[s - 2] : nullptr, light[s - 1], camera[t - 1]);
-    if (t >= 2) camera_before_end = scatter_density(scene, &light[s - 1], camera[t - 1], camera[t - 2]);
+    if (t >= 2) {
+      const DensityPair d = scatter_densities(camera[t - 2], camera[t - 1], light[s - 1]);
+      light_end = d.to_next;
+      camera_before_end = d.to_prev;
+    } else {
+      light_end = scatter_density(scene, nullptr, camera[0], light[s - 1]);
+    }
+    if (s >= 2) {
+      const DensityPair d = scatter_densities(light[s - 2], light[s - 1], camera[t - 1]);
+      camera_end = d.to_next;
+      light_before_end = d.to_prev;
+    } else {
+      camera_end = scatter_density(scene, nullptr, light[0], camera[t - 1]);
+    }
   }
 
   const PathVertex& origin = s > 0 ? light[0] : camera[k];

@@ -110,14 +110,22 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
 
 void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {
   const size_t n = path.size();
-  for (size_t i = 0; i < n; ++i) {
-    PathVertex& v = path[i];
-    if (i == 0)
-      v.pdf_fwd = v.kind == PathVertex::Kind::Camera ? 1 : light_origin_density(scene, v);
-    else
-      v.pdf_fwd = path[i - 1].delta ? 0 : scatter_density(scene, i >= 2 ? &path[i - 2] : nullptr, path[i - 1], v);
-    v.pdf_rev = 0;
-    if (i + 2 < n && !path[i + 1].delta) v.pdf_rev = scatter_density(scene, &path[i + 2], path[i + 1], v);
+  if (n == 0) return;
+  path[0].pdf_fwd = path[0].kind == PathVertex::Kind::Camera ? 1 : light_origin_density(scene, path[0]);
+  if (n >= 2) path[1].pdf_fwd = path[0].delta ? 0 : scatter_density(scene, nullptr, path[0], path[1]);
+  path[n - 1].pdf_rev = 0;
+  if (n >= 2) path[n - 2].pdf_rev = 0;
+  // Each scattering vertex gives its successor's forward density and its
+  // predecessor's reverse one.
+  for (size_t j = 1; j + 1 < n; ++j) {
+    if (path[j].delta) {
+      path[j + 1].pdf_fwd = 0;
+      path[j - 1].pdf_rev = 0;
+      continue;
+    }
+    const DensityPair d = scatter_densities(path[j - 1], path[j], path[j + 1]);
+    path[j + 1].pdf_fwd = d.to_next;
+    path[j - 1].pdf_rev = d.to_prev;
   }
 }
 

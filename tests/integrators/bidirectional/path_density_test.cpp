@@ -14,6 +14,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/loader/scene_loader.h"
 #include "core/registry/properties.h"
 #include "integrators/bidirectional/subpath.h"
 #include "tests/support/test_scenes.h"
@@ -76,6 +77,65 @@ TEST(PathDensity, PerspectiveAndThinLensCameraVertices) {
 TEST(PathDensity, OrthographicCameraVertices) {
   const auto scene = tilted_plane_under(sensor("orthographic", "", "<scale x='0.5' y='0.5'/>"));
   expect_first_vertex_densities(scene, [](const Ray& ray, const PathVertex& hit) { return abs_dot(hit.si.ng, ray.d); });
+}
+
+// The densities both ways at a scattering vertex are scatter_density's
+// each way, bit for bit, and the subpaths' stored densities are the ones
+// scatter_density and light_origin_density define: through diffuse,
+// glossy, plastic, delta and participating-media vertices, on camera and
+// light subpaths alike.
+TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
+  const PluginInfo* info = Registry::instance().find("sampler", "independent");
+  auto sampler = std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"test", 1})))->clone();
+  const PathSettings settings{12, 5, 0.95f, 0.1f, false};
+  std::vector<std::pair<std::string, LoadedScene>> scenes;
+  for (const char* name : {"cornell-box-glossy", "cornell-box-phong", "cornell-box-glass-fog"})
+    scenes.emplace_back(name,
+                        load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "16"}}));
+  // Smooth plastic: vertices that leave through the delta coat still have
+  // the diffuse base's density, which must not be stored.
+  scenes.emplace_back(
+      "plastic",
+      test::scene_from_xml(
+          "<scene version='3.0.0'>" + sensor("perspective", "<float name='fov' value='60'/>") +
+          "<shape type='rectangle'><transform name='to_world'><scale value='3'/></transform><bsdf type='plastic'/>"
+          "</shape><shape type='sphere'><float name='radius' value='0.4'/><bsdf type='plastic'/></shape>"
+          "<shape type='sphere'><point name='center' x='0.5' y='0.5' z='1.5'/><float name='radius' value='0.3'/>"
+          "<emitter type='area'><rgb name='radiance' value='5'/></emitter></shape></scene>"));
+  int scattering = 0, in_medium = 0, delta = 0;
+  for (const auto& [name, scene] : scenes) {
+    std::vector<PathVertex> path;
+    for (int i = 0; i < 1000; ++i) {
+      sampler->start_sample(SampleKey::camera({i % 16, i / 16 % 16}), uint64_t(i), 5);
+      if (i % 2)
+        trace_light_subpath(*scene, *sampler, settings, path);
+      else
+        trace_camera_subpath(*scene, scene->sensor().generate_ray({i % 16 + 0.5f, i / 16 % 16 + 0.5f}, {0.5f, 0.5f}),
+                             *sampler, settings, path);
+      compute_densities(*scene, path);
+      const size_t n = path.size();
+      for (size_t j = 0; j < n; ++j) {
+        const PathVertex& v = path[j];
+        const float fwd = j == 0 ? (v.kind == PathVertex::Kind::Camera ? 1 : light_origin_density(*scene, v))
+                          : path[j - 1].delta
+                              ? 0
+                              : scatter_density(*scene, j >= 2 ? &path[j - 2] : nullptr, path[j - 1], v);
+        const float rev = j + 2 < n && !path[j + 1].delta ? scatter_density(*scene, &path[j + 2], path[j + 1], v) : 0;
+        EXPECT_EQ(v.pdf_fwd, fwd) << name << ", sample " << i << ", vertex " << j;
+        EXPECT_EQ(v.pdf_rev, rev) << name << ", sample " << i << ", vertex " << j;
+        delta += v.delta && v.is_surface() && (v.bsdf->lobes() & ~kDelta);
+        if (j == 0 || j + 1 == n) continue;
+        const DensityPair both = scatter_densities(path[j - 1], v, path[j + 1]);
+        EXPECT_EQ(both.to_next, scatter_density(*scene, &path[j - 1], v, path[j + 1])) << name << ", vertex " << j;
+        EXPECT_EQ(both.to_prev, scatter_density(*scene, &path[j + 1], v, path[j - 1])) << name << ", vertex " << j;
+        ++scattering;
+        in_medium += v.in_medium();
+      }
+    }
+  }
+  EXPECT_GT(scattering, 1000);
+  EXPECT_GT(in_medium, 50);
+  EXPECT_GT(delta, 50);
 }
 
 }  // namespace
