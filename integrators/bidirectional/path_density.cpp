@@ -8,7 +8,8 @@
 
 namespace caustica {
 
-float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pdf) {
+float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pdf, float chain_cos) {
+  if (chain_cos >= 0) return pdf * chain_cos;
   if (to.environment) return pdf;
   const Vec3 d = to.p() - from.p();
   const float dist2 = squared_length(d);
@@ -27,7 +28,7 @@ float parallel_to_area(const PathVertex& to, Vec3 d, float pdf_across) {
 
 }  // namespace
 
-float emission_density(const PathVertex& light, const PathVertex& next) {
+float emission_density(const PathVertex& light, const PathVertex& next, float chain_cos) {
   float pdf_pos = 0, pdf_dir = 0;
   if (light.environment) {
     // Environment rays start on a disk facing their direction, so the
@@ -36,7 +37,7 @@ float emission_density(const PathVertex& light, const PathVertex& next) {
     return parallel_to_area(next, light.w_env, pdf_pos);
   }
   light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity}, light.si.ng, &pdf_pos, &pdf_dir);
-  return solid_angle_to_area(light, next, pdf_dir);
+  return solid_angle_to_area(light, next, pdf_dir, chain_cos);
 }
 
 float light_origin_density(const Scene& scene, const PathVertex& v) {
@@ -50,7 +51,8 @@ float light_origin_density(const Scene& scene, const PathVertex& v) {
   return pmf * pdf_pos;
 }
 
-float scatter_density(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
+float scatter_density(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
+                      float chain_cos) {
   switch (cur.kind) {
     case PathVertex::Kind::Camera: {
       float pdf_pos = 0, pdf_dir = 0;
@@ -59,10 +61,10 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
       // Parallel rays spread over the film's area reach next's surface with
       // the film's density, projected.
       if (scene.sensor().delta_direction()) return parallel_to_area(next, d, pdf_pos);
-      return solid_angle_to_area(cur, next, pdf_dir);
+      return solid_angle_to_area(cur, next, pdf_dir, chain_cos);
     }
     case PathVertex::Kind::Light:
-      return emission_density(cur, next);
+      return emission_density(cur, next, chain_cos);
     case PathVertex::Kind::Surface:
     case PathVertex::Kind::Medium:
       break;
@@ -70,7 +72,7 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
   if (!prev) throw std::logic_error("a scattering vertex cannot start a subpath");
   const Vec3 w_prev = direction_to(cur, *prev), w_next = direction_to(cur, next);
   return solid_angle_to_area(
-      cur, next, cur.in_medium() ? cur.medium->phase().eval(w_prev, w_next) : cur.bsdf->pdf(w_prev, w_next));
+      cur, next, cur.in_medium() ? cur.medium->phase().eval(w_prev, w_next) : cur.bsdf->pdf(w_prev, w_next), chain_cos);
 }
 
 DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next) {
@@ -85,7 +87,33 @@ DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, con
     forward = pdfs.forward;
     backward = pdfs.backward;
   }
-  return {solid_angle_to_area(cur, next, forward), solid_angle_to_area(cur, prev, backward)};
+  return {solid_angle_to_area(cur, next, forward, next.chain_cos_fwd),
+          solid_angle_to_area(cur, prev, backward, prev.chain_cos_bwd)};
+}
+
+namespace {
+
+// The cosine at a chain's far end `end`, reached from the chain's last
+// vertex; negative for the environment.
+float end_cos(const PathVertex& end, const PathVertex& last) {
+  if (end.environment) return -1;
+  return end.has_normal() ? abs_dot(end.si.ng, direction_to(end, last)) : 1;
+}
+
+}  // namespace
+
+void find_chain_ends(std::vector<PathVertex>& path) {
+  const size_t n = path.size();
+  float ahead = -1;  // the forward chain cosine of a specular vertex at i
+  for (size_t i = n; i-- > 0;) {
+    path[i].chain_cos_fwd = specular(path[i]) ? ahead : -1;
+    if (i > 0 && specular(path[i - 1]) && !specular(path[i])) ahead = end_cos(path[i], path[i - 1]);
+  }
+  float behind = -1;
+  for (size_t i = 0; i < n; ++i) {
+    path[i].chain_cos_bwd = specular(path[i]) ? behind : -1;
+    if (i + 1 < n && specular(path[i + 1]) && !specular(path[i])) behind = end_cos(path[i], path[i + 1]);
+  }
 }
 
 }  // namespace caustica

@@ -31,6 +31,11 @@ struct PathVertex {
   Color beta;                // the subpath's throughput up to this vertex
   float pdf_fwd = 0;         // density of this vertex as its own subpath sampled it
   float pdf_rev = 0;         // density of this vertex as the other subpath would sample it
+  // For a vertex of a specular chain (see specular()), the cosine at the
+  // chain's far end, the first vertex past it that is not specular, walking
+  // on along its subpath (forward) or back toward its start (backward):
+  // negative where that end is the environment or beyond the subpath.
+  float chain_cos_fwd = -1, chain_cos_bwd = -1;
   std::optional<SurfaceBsdf> bsdf;
   // The medium the subpath reached this vertex through (for a medium
   // vertex, the one it lies in; for the camera and a light, the one they
@@ -46,6 +51,12 @@ struct PathVertex {
 // Whether a connection can join `v`: a point in a medium always can, a
 // surface when its BSDF has a lobe that is not delta.
 bool joinable(const PathVertex& v);
+
+// Whether `v` belongs to a specular chain: a surface vertex the subpath
+// left through a delta lobe that no connection can join and that emits
+// nothing. Such a vertex passes its path on deterministically, whichever
+// side sampled it.
+bool specular(const PathVertex& v);
 
 // How much of what arrives at the scattering vertex `v` from w_next leaves
 // toward w_prev: the phase function in a medium, at a surface the BSDF

@@ -21,7 +21,7 @@ float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std
   float light_end = 0, light_before_end = 0, camera_end = 0, camera_before_end = 0;
   if (s == 0) {
     camera_end = light_origin_density(scene, camera[t - 1]);
-    if (t >= 2) camera_before_end = emission_density(camera[t - 1], camera[t - 2]);
+    if (t >= 2) camera_before_end = emission_density(camera[t - 1], camera[t - 2], camera[t - 2].chain_cos_bwd);
   } else {
     if (t >= 2) {
       const DensityPair d = scatter_densities(camera[t - 2], camera[t - 1], light[s - 1]);

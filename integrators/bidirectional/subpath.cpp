@@ -111,8 +111,10 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
 void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {
   const size_t n = path.size();
   if (n == 0) return;
+  find_chain_ends(path);
   path[0].pdf_fwd = path[0].kind == PathVertex::Kind::Camera ? 1 : light_origin_density(scene, path[0]);
-  if (n >= 2) path[1].pdf_fwd = path[0].delta ? 0 : scatter_density(scene, nullptr, path[0], path[1]);
+  if (n >= 2)
+    path[1].pdf_fwd = path[0].delta ? 0 : scatter_density(scene, nullptr, path[0], path[1], path[1].chain_cos_fwd);
   path[n - 1].pdf_rev = 0;
   if (n >= 2) path[n - 2].pdf_rev = 0;
   // Each scattering vertex gives its successor's forward density and its

@@ -79,17 +79,31 @@ TEST(PathDensity, OrthographicCameraVertices) {
   expect_first_vertex_densities(scene, [](const Ray& ray, const PathVertex& hit) { return abs_dot(hit.si.ng, ray.d); });
 }
 
+// The cosine at the far end of the specular chain that starts at path[j]
+// and runs on by `step` (+1 or -1): the first vertex that is not specular,
+// at the direction back to the chain; -1 for none, the environment, or a
+// vertex outside any chain.
+float chain_end_cos(const std::vector<PathVertex>& path, size_t j, int step) {
+  if (!specular(path[j])) return -1;
+  long k = long(j);
+  while (k >= 0 && k < long(path.size()) && specular(path[size_t(k)])) k += step;
+  if (k < 0 || k >= long(path.size()) || path[size_t(k)].environment) return -1;
+  const PathVertex &end = path[size_t(k)], &last = path[size_t(k - step)];
+  return end.has_normal() ? std::abs(dot(end.si.ng, normalize(last.p() - end.p()))) : 1;
+}
+
 // The densities both ways at a scattering vertex are scatter_density's
 // each way, bit for bit, and the subpaths' stored densities are the ones
-// scatter_density and light_origin_density define: through diffuse,
-// glossy, plastic, delta and participating-media vertices, on camera and
-// light subpaths alike.
+// scatter_density and light_origin_density define, measured at the far
+// end of a specular chain for a vertex that starts one: through diffuse,
+// glossy, plastic, glass, mirror and participating-media vertices, on
+// camera and light subpaths alike.
 TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
   const PluginInfo* info = Registry::instance().find("sampler", "independent");
   auto sampler = std::dynamic_pointer_cast<Sampler>(info->create(Properties(*info, {"test", 1})))->clone();
   const PathSettings settings{12, 5, 0.95f, 0.1f, false};
   std::vector<std::pair<std::string, LoadedScene>> scenes;
-  for (const char* name : {"cornell-box-glossy", "cornell-box-phong", "cornell-box-glass-fog"})
+  for (const char* name : {"cornell-box-glossy", "cornell-box-phong", "cornell-box-glass-fog", "cornell-box-mirror"})
     scenes.emplace_back(name,
                         load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "16"}}));
   // Smooth plastic: vertices that leave through the delta coat still have
@@ -102,7 +116,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
           "</shape><shape type='sphere'><float name='radius' value='0.4'/><bsdf type='plastic'/></shape>"
           "<shape type='sphere'><point name='center' x='0.5' y='0.5' z='1.5'/><float name='radius' value='0.3'/>"
           "<emitter type='area'><rgb name='radiance' value='5'/></emitter></shape></scene>"));
-  int scattering = 0, in_medium = 0, delta = 0;
+  int scattering = 0, in_medium = 0, delta = 0, chains = 0;
   for (const auto& [name, scene] : scenes) {
     std::vector<PathVertex> path;
     for (int i = 0; i < 1000; ++i) {
@@ -117,17 +131,22 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
       for (size_t j = 0; j < n; ++j) {
         const PathVertex& v = path[j];
         const float fwd = j == 0 ? (v.kind == PathVertex::Kind::Camera ? 1 : light_origin_density(*scene, v))
-                          : path[j - 1].delta
-                              ? 0
-                              : scatter_density(*scene, j >= 2 ? &path[j - 2] : nullptr, path[j - 1], v);
-        const float rev = j + 2 < n && !path[j + 1].delta ? scatter_density(*scene, &path[j + 2], path[j + 1], v) : 0;
+                          : path[j - 1].delta ? 0
+                                              : scatter_density(*scene, j >= 2 ? &path[j - 2] : nullptr, path[j - 1], v,
+                                                                chain_end_cos(path, j, 1));
+        const float rev = j + 2 < n && !path[j + 1].delta
+                              ? scatter_density(*scene, &path[j + 2], path[j + 1], v, chain_end_cos(path, j, -1))
+                              : 0;
+        chains += chain_end_cos(path, j, 1) >= 0 && chain_end_cos(path, j, -1) >= 0;
         EXPECT_EQ(v.pdf_fwd, fwd) << name << ", sample " << i << ", vertex " << j;
         EXPECT_EQ(v.pdf_rev, rev) << name << ", sample " << i << ", vertex " << j;
         delta += v.delta && v.is_surface() && (v.bsdf->lobes() & ~kDelta);
         if (j == 0 || j + 1 == n) continue;
         const DensityPair both = scatter_densities(path[j - 1], v, path[j + 1]);
-        EXPECT_EQ(both.to_next, scatter_density(*scene, &path[j - 1], v, path[j + 1])) << name << ", vertex " << j;
-        EXPECT_EQ(both.to_prev, scatter_density(*scene, &path[j + 1], v, path[j - 1])) << name << ", vertex " << j;
+        EXPECT_EQ(both.to_next, scatter_density(*scene, &path[j - 1], v, path[j + 1], chain_end_cos(path, j + 1, 1)))
+            << name << ", vertex " << j;
+        EXPECT_EQ(both.to_prev, scatter_density(*scene, &path[j + 1], v, path[j - 1], chain_end_cos(path, j - 1, -1)))
+            << name << ", vertex " << j;
         ++scattering;
         in_medium += v.in_medium();
       }
@@ -136,6 +155,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
   EXPECT_GT(scattering, 1000);
   EXPECT_GT(in_medium, 50);
   EXPECT_GT(delta, 50);
+  EXPECT_GT(chains, 50);
 }
 
 }  // namespace
