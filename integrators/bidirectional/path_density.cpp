@@ -21,8 +21,10 @@ float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pd
 namespace {
 
 // A density per unit area across a bundle of parallel rays along d,
-// converted to the density per unit area on the surface of `to`.
-float parallel_to_area(const PathVertex& to, Vec3 d, float pdf_across) {
+// converted to the density per unit area on the surface of `to`, or for a
+// chain start into the chain's measure (with the cosine where it ends).
+float parallel_to_area(const PathVertex& to, Vec3 d, float pdf_across, float chain_cos) {
+  if (chain_cos >= 0) return pdf_across * chain_cos;
   return to.has_normal() ? pdf_across * abs_dot(to.si.ng, d) : pdf_across;
 }
 
@@ -34,7 +36,7 @@ float emission_density(const PathVertex& light, const PathVertex& next, float ch
     // Environment rays start on a disk facing their direction, so the
     // density of the point they reach is the disk's, projected.
     light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
-    return parallel_to_area(next, light.w_env, pdf_pos);
+    return parallel_to_area(next, light.w_env, pdf_pos, chain_cos);
   }
   light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity}, light.si.ng, &pdf_pos, &pdf_dir);
   return solid_angle_to_area(light, next, pdf_dir, chain_cos);
@@ -60,7 +62,7 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
       scene.sensor().pdf_We({cur.p(), d, kInfinity}, &pdf_pos, &pdf_dir);
       // Parallel rays spread over the film's area reach next's surface with
       // the film's density, projected.
-      if (scene.sensor().delta_direction()) return parallel_to_area(next, d, pdf_pos);
+      if (scene.sensor().delta_direction()) return parallel_to_area(next, d, pdf_pos, chain_cos);
       return solid_angle_to_area(cur, next, pdf_dir, chain_cos);
     }
     case PathVertex::Kind::Light:
@@ -94,10 +96,11 @@ DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, con
 namespace {
 
 // The cosine at a chain's far end `end`, reached from the chain's last
-// vertex; negative for the environment.
+// vertex: 1 for a direction (the environment) or a point without a surface.
+// With it a chain weighs its two ends as a straight segment between them
+// would: the sampled densities, each end's cosine, the distance cancelled.
 float end_cos(const PathVertex& end, const PathVertex& last) {
-  if (end.environment) return -1;
-  return end.has_normal() ? abs_dot(end.si.ng, direction_to(end, last)) : 1;
+  return end.has_normal() && !end.environment ? abs_dot(end.si.ng, direction_to(end, last)) : 1;
 }
 
 }  // namespace

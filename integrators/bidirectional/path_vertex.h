@@ -34,7 +34,7 @@ struct PathVertex {
   // For a vertex of a specular chain (see specular()), the cosine at the
   // chain's far end, the first vertex past it that is not specular, walking
   // on along its subpath (forward) or back toward its start (backward):
-  // negative where that end is the environment or beyond the subpath.
+  // negative where the chain runs past the subpath's end.
   float chain_cos_fwd = -1, chain_cos_bwd = -1;
   std::optional<SurfaceBsdf> bsdf;
   // The medium the subpath reached this vertex through (for a medium

@@ -81,15 +81,17 @@ TEST(PathDensity, OrthographicCameraVertices) {
 
 // The cosine at the far end of the specular chain that starts at path[j]
 // and runs on by `step` (+1 or -1): the first vertex that is not specular,
-// at the direction back to the chain; -1 for none, the environment, or a
-// vertex outside any chain.
+// at the direction back to the chain, 1 for the environment or a point
+// without a normal; -1 when the chain runs off the path or path[j] is in
+// no chain.
 float chain_end_cos(const std::vector<PathVertex>& path, size_t j, int step) {
   if (!specular(path[j])) return -1;
   long k = long(j);
   while (k >= 0 && k < long(path.size()) && specular(path[size_t(k)])) k += step;
-  if (k < 0 || k >= long(path.size()) || path[size_t(k)].environment) return -1;
+  if (k < 0 || k >= long(path.size())) return -1;
   const PathVertex &end = path[size_t(k)], &last = path[size_t(k - step)];
-  return end.has_normal() ? std::abs(dot(end.si.ng, normalize(last.p() - end.p()))) : 1;
+  if (end.environment || !end.has_normal()) return 1;
+  return std::abs(dot(end.si.ng, normalize(last.p() - end.p())));
 }
 
 // The densities both ways at a scattering vertex are scatter_density's
@@ -107,7 +109,8 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
     scenes.emplace_back(name,
                         load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "16"}}));
   // Smooth plastic: vertices that leave through the delta coat still have
-  // the diffuse base's density, which must not be stored.
+  // the diffuse base's density, which must not be stored; and glass whose
+  // chains end in the environment.
   scenes.emplace_back(
       "plastic",
       test::scene_from_xml(
@@ -115,8 +118,11 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
           "<shape type='rectangle'><transform name='to_world'><scale value='3'/></transform><bsdf type='plastic'/>"
           "</shape><shape type='sphere'><float name='radius' value='0.4'/><bsdf type='plastic'/></shape>"
           "<shape type='sphere'><point name='center' x='0.5' y='0.5' z='1.5'/><float name='radius' value='0.3'/>"
-          "<emitter type='area'><rgb name='radiance' value='5'/></emitter></shape></scene>"));
-  int scattering = 0, in_medium = 0, delta = 0, chains = 0;
+          "<emitter type='area'><rgb name='radiance' value='5'/></emitter></shape>"
+          "<shape type='sphere'><point name='center' x='-0.7' y='0' z='0.4'/><float name='radius' value='0.4'/>"
+          "<bsdf type='dielectric'/></shape><emitter type='constant'><rgb name='radiance' value='0.5'/></emitter>"
+          "</scene>"));
+  int scattering = 0, in_medium = 0, delta = 0, chains = 0, to_environment = 0;
   for (const auto& [name, scene] : scenes) {
     std::vector<PathVertex> path;
     for (int i = 0; i < 1000; ++i) {
@@ -138,6 +144,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
                               ? scatter_density(*scene, &path[j + 2], path[j + 1], v, chain_end_cos(path, j, -1))
                               : 0;
         chains += chain_end_cos(path, j, 1) >= 0 && chain_end_cos(path, j, -1) >= 0;
+        to_environment += specular(v) && path.back().environment && chain_end_cos(path, j, 1) >= 0;
         EXPECT_EQ(v.pdf_fwd, fwd) << name << ", sample " << i << ", vertex " << j;
         EXPECT_EQ(v.pdf_rev, rev) << name << ", sample " << i << ", vertex " << j;
         delta += v.delta && v.is_surface() && (v.bsdf->lobes() & ~kDelta);
@@ -156,6 +163,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
   EXPECT_GT(in_medium, 50);
   EXPECT_GT(delta, 50);
   EXPECT_GT(chains, 50);
+  EXPECT_GT(to_environment, 20);
 }
 
 }  // namespace
