@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/math/float4.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
 
@@ -70,10 +71,19 @@ Bounds3 TriangleMesh::bounds() const {
   return b;
 }
 
-TriangleMesh::SurfacePoint TriangleMesh::point_at(unsigned prim, float b1, float b2) const {
-  const uint32_t i0 = mesh_.indices[3 * prim], i1 = mesh_.indices[3 * prim + 1], i2 = mesh_.indices[3 * prim + 2];
-  const Vec3 p0 = mesh_.positions[i0], p1 = mesh_.positions[i1], p2 = mesh_.positions[i2];
+TriangleMesh::Corners TriangleMesh::corners(unsigned prim) const {
+  const uint32_t* i = &mesh_.indices[3 * size_t(prim)];
+  return {i[0],
+          i[1],
+          i[2],
+          to_float4(mesh_.positions[i[0]]),
+          to_float4(mesh_.positions[i[1]]),
+          to_float4(mesh_.positions[i[2]])};
+}
+
+TriangleMesh::SurfacePoint TriangleMesh::point_at(const Corners& c, float b1, float b2) const {
   const float b0 = 1 - b1 - b2;
+  const Float4 w0 = c.p0 * b0, w1 = c.p1 * b1, w2 = c.p2 * b2;
 
   SurfacePoint sp;
   // The point is interpolated from the vertices rather than taken as o + t d:
@@ -82,26 +92,30 @@ TriangleMesh::SurfacePoint TriangleMesh::point_at(unsigned prim, float b1, float
   // vertices, so a ray leaving a point exactly on an axis-aligned plane
   // (where the interpolation is exact) still needs to clear Embree's own
   // rounding, which scales with the vertex coordinates.
-  sp.p = p0 * b0 + p1 * b1 + p2 * b2;
-  const float magnitude = max_component(max(max(abs(p0), abs(p1)), abs(p2)));
-  sp.p_error = max((abs(p0 * b0) + abs(p1 * b1) + abs(p2 * b2)) * gamma(7), Vec3(1, 1, 1) * (magnitude * gamma(7)));
-  sp.ng = normalize(cross(p1 - p0, p2 - p0));
-  if (flip_normals_) sp.ng = -sp.ng;
+  sp.p = to_vec3(w0 + w1 + w2);
+  const float magnitude = max_component(max(max(abs(c.p0), abs(c.p1)), abs(c.p2)));
+  sp.p_error = to_vec3(max((abs(w0) + abs(w1) + abs(w2)) * gamma(7), Float4{} + magnitude * gamma(7)));
+  Float4 ng = normalize(cross(c.p1 - c.p0, c.p2 - c.p0));
+  if (flip_normals_) ng = -ng;
+  sp.ng = to_vec3(ng);
   sp.ns = sp.ng;
   if (!mesh_.normals.empty()) {
-    const Vec3 interpolated = mesh_.normals[i0] * b0 + mesh_.normals[i1] * b1 + mesh_.normals[i2] * b2;
-    if (squared_length(interpolated) > 0) {
-      sp.ns = normalize(interpolated);
-      if (flip_normals_) sp.ns = -sp.ns;
-      sp.ng = face_forward(sp.ng, sp.ns);
+    const Float4 interpolated =
+        to_float4(mesh_.normals[c.i0]) * b0 + to_float4(mesh_.normals[c.i1]) * b1 + to_float4(mesh_.normals[c.i2]) * b2;
+    if (dot(interpolated, interpolated) > 0) {
+      Float4 ns = normalize(interpolated);
+      if (flip_normals_) ns = -ns;
+      sp.ns = to_vec3(ns);
+      if (dot(ng, ns) < 0) sp.ng = -sp.ng;
     }
   }
-  sp.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[i0] * b0 + mesh_.uvs[i1] * b1 + mesh_.uvs[i2] * b2;
+  sp.uv = mesh_.uvs.empty() ? Vec2(b1, b2) : mesh_.uvs[c.i0] * b0 + mesh_.uvs[c.i1] * b1 + mesh_.uvs[c.i2] * b2;
   return sp;
 }
 
 SurfaceInteraction TriangleMesh::interaction(const Ray&, const RayHit& hit) const {
-  const SurfacePoint sp = point_at(hit.prim, hit.uv.x, hit.uv.y);
+  const Corners c = corners(hit.prim);
+  const SurfacePoint sp = point_at(c, hit.uv.x, hit.uv.y);
   SurfaceInteraction si;
   si.p = sp.p;
   si.p_error = sp.p_error;
@@ -110,20 +124,18 @@ SurfaceInteraction TriangleMesh::interaction(const Ray&, const RayHit& hit) cons
   si.ng = sp.ng;
   si.uv = sp.uv;
   // Tangents from the uv parametrisation (barycentric when there are no uvs).
-  const uint32_t i0 = mesh_.indices[3 * hit.prim], i1 = mesh_.indices[3 * hit.prim + 1],
-                 i2 = mesh_.indices[3 * hit.prim + 2];
-  const Vec3 p0 = mesh_.positions[i0], p1 = mesh_.positions[i1], p2 = mesh_.positions[i2];
-  const Vec2 uv0 = mesh_.uvs.empty() ? Vec2(0, 0) : mesh_.uvs[i0], uv1 = mesh_.uvs.empty() ? Vec2(1, 0) : mesh_.uvs[i1],
-             uv2 = mesh_.uvs.empty() ? Vec2(0, 1) : mesh_.uvs[i2];
+  const Vec2 uv0 = mesh_.uvs.empty() ? Vec2(0, 0) : mesh_.uvs[c.i0],
+             uv1 = mesh_.uvs.empty() ? Vec2(1, 0) : mesh_.uvs[c.i1],
+             uv2 = mesh_.uvs.empty() ? Vec2(0, 1) : mesh_.uvs[c.i2];
   const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
-  const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+  const Float4 dp02 = c.p0 - c.p2, dp12 = c.p1 - c.p2;
   const float det = duv02.x * duv12.y - duv02.y * duv12.x;
   if (det != 0 && std::isfinite(1 / det)) {
-    si.dpdu = (dp02 * duv12.y - dp12 * duv02.y) / det;
-    si.dpdv = (dp12 * duv02.x - dp02 * duv12.x) / det;
+    si.dpdu = to_vec3((dp02 * duv12.y - dp12 * duv02.y) / det);
+    si.dpdv = to_vec3((dp12 * duv02.x - dp02 * duv12.x) / det);
   } else {
-    si.dpdu = p1 - p0;
-    si.dpdv = p2 - p0;
+    si.dpdu = to_vec3(c.p1 - c.p0);
+    si.dpdv = to_vec3(c.p2 - c.p0);
   }
   si.shading = Frame::from_normal_and_tangent(sp.ns, si.dpdu);
   return si;
@@ -135,7 +147,7 @@ PositionSample TriangleMesh::sample_position(Vec2 u) const {
   const size_t tri = area_distribution_->sample(u.x, nullptr, &u_reused);
   const Vec2 b = square_to_uniform_triangle({u_reused, u.y});
   // Only the point, its error, normal and uv: no tangents or shading frame.
-  const SurfacePoint sp = point_at(unsigned(tri), b.y, 1 - b.x - b.y);
+  const SurfacePoint sp = point_at(corners(unsigned(tri)), b.y, 1 - b.x - b.y);
   return {sp.p, sp.p_error, sp.ng, sp.uv, 1 / area_};
 }
 

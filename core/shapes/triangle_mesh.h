@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/math/float4.h"
 #include "core/math/transform.h"
 #include "core/registry/param_spec.h"
 #include "core/sampling/discrete_distribution.h"
@@ -41,14 +42,20 @@ class TriangleMesh : public Shape {
   size_t collapsed_triangles() const { return collapsed_; }
 
  private:
-  // A point at barycentrics (b1, b2) of triangle `prim`: position and its
+  // A point at barycentrics (b1, b2) of a triangle: position and its
   // error bound, the geometric normal (flipped with the mesh, facing the
   // interpolated one) and the shading normal, uv.
   struct SurfacePoint {
     Vec3 p, p_error, ng, ns;
     Vec2 uv;
   };
-  SurfacePoint point_at(unsigned prim, float b1, float b2) const;
+  // A triangle's vertex indices and positions, read once per point.
+  struct Corners {
+    uint32_t i0, i1, i2;
+    Float4 p0, p1, p2;
+  };
+  Corners corners(unsigned prim) const;
+  SurfacePoint point_at(const Corners& c, float b1, float b2) const;
 
   MeshData mesh_;
   bool flip_normals_;
