@@ -30,11 +30,9 @@ inline float dot(Float4 a, Float4 b) {
   const Float4 m = a * b;
   return m[0] + m[1] + m[2];
 }
-inline Float4 cross(Float4 a, Float4 b) {
-  using Lanes = int32_t __attribute__((vector_size(16)));
-  const Lanes yzx{1, 2, 0, 3}, zxy{2, 0, 1, 3};
-  return __builtin_shuffle(a, yzx) * __builtin_shuffle(b, zxy) - __builtin_shuffle(a, zxy) * __builtin_shuffle(b, yzx);
-}
+inline Float4 yzx(Float4 v) { return __builtin_shufflevector(v, v, 1, 2, 0, 3); }
+inline Float4 zxy(Float4 v) { return __builtin_shufflevector(v, v, 2, 0, 1, 3); }
+inline Float4 cross(Float4 a, Float4 b) { return yzx(a) * zxy(b) - zxy(a) * yzx(b); }
 inline Float4 normalize(Float4 v) { return v / std::sqrt(dot(v, v)); }
 
 }  // namespace caustica
