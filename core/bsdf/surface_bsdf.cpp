@@ -42,6 +42,13 @@ SurfaceBsdf::PdfPair SurfaceBsdf::pdfs(Vec3 wo_world, Vec3 wi_world) const {
   return {bsdf_->pdf(ctx_, wo, wi), bsdf_->pdf(ctx_, wi, wo)};
 }
 
+SurfaceBsdf::EvalPdfs SurfaceBsdf::eval_and_pdfs(Vec3 wo_world, Vec3 wi_world) const {
+  const Vec3 wo = frame_.to_local(wo_world), wi = frame_.to_local(wi_world);
+  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return {{}, {0, 0}};
+  return {bsdf_->eval(ctx_, wo, wi) * shading_correction(wo_world, wi_world),
+          {bsdf_->pdf(ctx_, wo, wi), bsdf_->pdf(ctx_, wi, wo)}};
+}
+
 std::optional<BsdfSample> SurfaceBsdf::sample(Vec3 wo_world, float u_lobe, Vec2 u) const {
   const Vec3 wo = frame_.to_local(wo_world);
   if (wo.z == 0) return std::nullopt;

@@ -35,6 +35,12 @@ class SurfaceBsdf {
     float forward, backward;
   };
   PdfPair pdfs(Vec3 wo_world, Vec3 wi_world) const;
+  // eval(wo, wi) with pdfs(wo, wi), the frame transforms done once.
+  struct EvalPdfs {
+    Color f;
+    PdfPair pdf;
+  };
+  EvalPdfs eval_and_pdfs(Vec3 wo_world, Vec3 wi_world) const;
   // The sample's wi is in world space.
   std::optional<BsdfSample> sample(Vec3 wo_world, float u_lobe, Vec2 u) const;
   Color albedo(Vec3 wo_world) const { return bsdf_->albedo(ctx_, frame_.to_local(wo_world)); }

@@ -169,11 +169,16 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     const float dist2 = squared_length(d);
     if (dist2 == 0) return {};
     const Vec3 wi = d / std::sqrt(dist2);
-    Color f = scattering(cv, wo, wi) * scattering(lv, direction_to(lv, light[s - 2]), -wi) * (1 / dist2);
+    // The BSDF values and the densities the weight needs, from one frame
+    // transform at each end (its directions are those the weight would take).
+    const ScatteringBothWays at_camera = scattering_both_ways(cv, wo, wi);
+    const ScatteringBothWays at_light = scattering_both_ways(lv, direction_to(lv, light[s - 2]), -wi);
+    Color f = at_camera.f * at_light.f * (1 / dist2);
     if (f.is_black()) return {};
     f *= shadow_visibility(scene, cv.si.spawn_to(lv.p(), lv.si.p_error, lv.si.ng), medium_toward(cv, wi), sampler);
     if (f.is_black()) return {};
-    return cv.beta * f * lv.beta * strategy_weight(scene, light.first(s), camera_part, s, t, heuristic_);
+    const ConnectionDensities densities = joined_densities(camera[t - 2], cv, at_camera, light[s - 2], lv, at_light);
+    return cv.beta * f * lv.beta * strategy_weight(light.first(s), camera_part, s, t, heuristic_, densities);
   }
 
   // Strategy (0, t): the camera subpath's last vertex is on an emitter.

@@ -89,6 +89,11 @@ DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, con
     forward = pdfs.forward;
     backward = pdfs.backward;
   }
+  return area_densities(prev, cur, next, forward, backward);
+}
+
+DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
+                           float backward) {
   return {solid_angle_to_area(cur, next, forward, next.chain_cos_fwd),
           solid_angle_to_area(cur, prev, backward, prev.chain_cos_bwd)};
 }

@@ -45,6 +45,9 @@ struct DensityPair {
   float to_next, to_prev;
 };
 DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next);
+// The same from the solid-angle densities at `cur` (scattering_both_ways's).
+DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
+                           float backward);
 
 // Density of a light subpath starting at the light vertex `v` (or the
 // emitting surface vertex, or the environment direction): the light

@@ -14,6 +14,16 @@ Color scattering(const PathVertex& v, Vec3 w_prev, Vec3 w_next) {
   return v.bsdf->eval(w_prev, w_next) * abs_dot(w_next, v.si.shading.n);
 }
 
+ScatteringBothWays scattering_both_ways(const PathVertex& v, Vec3 w_prev, Vec3 w_next) {
+  if (v.in_medium()) {
+    const PhaseFunction& phase = v.medium->phase();
+    const float p = phase.eval(w_prev, w_next);
+    return {Color(p), p, phase.eval(w_next, w_prev)};
+  }
+  const SurfaceBsdf::EvalPdfs e = v.bsdf->eval_and_pdfs(w_prev, w_next);
+  return {e.f * abs_dot(w_next, v.si.shading.n), e.pdf.forward, e.pdf.backward};
+}
+
 const Medium* medium_toward(const PathVertex& v, Vec3 w) {
   return v.is_surface() ? medium_after(v.si, v.medium, w) : v.medium;
 }

@@ -63,6 +63,15 @@ bool specular(const PathVertex& v);
 // times |cos| at w_next (both directions unit, away from v).
 Color scattering(const PathVertex& v, Vec3 w_prev, Vec3 w_next);
 
+// scattering(v, w_prev, w_next) with the solid-angle densities of sampling
+// w_next from w_prev (forward) and w_prev from w_next (backward), for a
+// connection's endpoint, whose value and weight need all three.
+struct ScatteringBothWays {
+  Color f;
+  float forward = 0, backward = 0;
+};
+ScatteringBothWays scattering_both_ways(const PathVertex& v, Vec3 w_prev, Vec3 w_next);
+
 // The medium a ray leaving `v` along w travels through first.
 const Medium* medium_toward(const PathVertex& v, Vec3 w);
 

@@ -12,32 +12,52 @@ float remap(float pdf) { return pdf != 0 ? pdf : 1; }
 
 }  // namespace
 
+ConnectionDensities connection_densities(const Scene& scene, std::span<const PathVertex> light,
+                                         std::span<const PathVertex> camera, int s, int t) {
+  ConnectionDensities d;
+  if (s == 0) {
+    d.camera_end = light_origin_density(scene, camera[t - 1]);
+    if (t >= 2) d.camera_before_end = emission_density(camera[t - 1], camera[t - 2], camera[t - 2].chain_cos_bwd);
+    return d;
+  }
+  if (t >= 2) {
+    const DensityPair pair = scatter_densities(camera[t - 2], camera[t - 1], light[s - 1]);
+    d.light_end = pair.to_next;
+    d.camera_before_end = pair.to_prev;
+  } else {
+    d.light_end = scatter_density(scene, nullptr, camera[0], light[s - 1]);
+  }
+  if (s >= 2) {
+    const DensityPair pair = scatter_densities(light[s - 2], light[s - 1], camera[t - 1]);
+    d.camera_end = pair.to_next;
+    d.light_before_end = pair.to_prev;
+  } else {
+    d.camera_end = scatter_density(scene, nullptr, light[0], camera[t - 1]);
+  }
+  return d;
+}
+
+ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVertex& camera_end,
+                                     const ScatteringBothWays& at_camera, const PathVertex& light_prev,
+                                     const PathVertex& light_end, const ScatteringBothWays& at_light) {
+  const DensityPair camera_side =
+      area_densities(camera_prev, camera_end, light_end, at_camera.forward, at_camera.backward);
+  const DensityPair light_side = area_densities(light_prev, light_end, camera_end, at_light.forward, at_light.backward);
+  return {.light_end = camera_side.to_next,
+          .light_before_end = light_side.to_prev,
+          .camera_end = light_side.to_next,
+          .camera_before_end = camera_side.to_prev};
+}
+
 float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std::span<const PathVertex> camera, int s,
                       int t, MisHeuristic heuristic) {
-  const int k = s + t - 1;  // the path has vertices x_0 (on the light) .. x_k (the camera)
+  return strategy_weight(light, camera, s, t, heuristic, connection_densities(scene, light, camera, s, t));
+}
 
-  // The densities the connection decides: for x_{s-1} and x_{s-2} as the
-  // camera side would sample them, for x_s and x_{s+1} as the light side would.
-  float light_end = 0, light_before_end = 0, camera_end = 0, camera_before_end = 0;
-  if (s == 0) {
-    camera_end = light_origin_density(scene, camera[t - 1]);
-    if (t >= 2) camera_before_end = emission_density(camera[t - 1], camera[t - 2], camera[t - 2].chain_cos_bwd);
-  } else {
-    if (t >= 2) {
-      const DensityPair d = scatter_densities(camera[t - 2], camera[t - 1], light[s - 1]);
-      light_end = d.to_next;
-      camera_before_end = d.to_prev;
-    } else {
-      light_end = scatter_density(scene, nullptr, camera[0], light[s - 1]);
-    }
-    if (s >= 2) {
-      const DensityPair d = scatter_densities(light[s - 2], light[s - 1], camera[t - 1]);
-      camera_end = d.to_next;
-      light_before_end = d.to_prev;
-    } else {
-      camera_end = scatter_density(scene, nullptr, light[0], camera[t - 1]);
-    }
-  }
+float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
+                      MisHeuristic heuristic, const ConnectionDensities& densities) {
+  const int k = s + t - 1;  // the path has vertices x_0 (on the light) .. x_k (the camera)
+  const auto [light_end, light_before_end, camera_end, camera_before_end] = densities;
 
   const PathVertex& origin = s > 0 ? light[0] : camera[k];
   const auto h = [&](float r) { return heuristic == MisHeuristic::Power ? r * r : r; };

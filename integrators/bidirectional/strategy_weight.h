@@ -25,4 +25,24 @@ enum class MisHeuristic { Balance, Power };
 float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std::span<const PathVertex> camera, int s,
                       int t, MisHeuristic heuristic);
 
+// The densities a connection decides, per unit area: of x_{s-1} and x_{s-2}
+// as the camera side would sample them (light_end, light_before_end), and
+// of x_s and x_{s+1} as the light side would (camera_end,
+// camera_before_end); 0 where a subpath has no such vertex.
+struct ConnectionDensities {
+  float light_end = 0, light_before_end = 0, camera_end = 0, camera_before_end = 0;
+};
+ConnectionDensities connection_densities(const Scene& scene, std::span<const PathVertex> light,
+                                         std::span<const PathVertex> camera, int s, int t);
+// The same for a connection of light[s-1] to camera[t-1] with s, t >= 2,
+// from what scattering_both_ways gave at its ends (at the camera end
+// toward camera[t-2] and the light end, at the light end toward
+// light[s-2] and the camera end): bdpt has them with the BSDF values.
+ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVertex& camera_end,
+                                     const ScatteringBothWays& at_camera, const PathVertex& light_prev,
+                                     const PathVertex& light_end, const ScatteringBothWays& at_light);
+// The weight from densities the caller already has.
+float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
+                      MisHeuristic heuristic, const ConnectionDensities& densities);
+
 }  // namespace caustica

@@ -95,7 +95,8 @@ float chain_end_cos(const std::vector<PathVertex>& path, size_t j, int step) {
 }
 
 // The densities both ways at a scattering vertex are scatter_density's
-// each way, bit for bit, and the subpaths' stored densities are the ones
+// each way, bit for bit (as is a connection endpoint's value and densities
+// from scattering_both_ways: scattering's value, the same densities), and the subpaths' stored densities are the ones
 // scatter_density and light_origin_density define, measured at the far
 // end of a specular chain for a vertex that starts one: through diffuse,
 // glossy, plastic, glass, mirror and participating-media vertices, on
@@ -154,6 +155,14 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
             << name << ", vertex " << j;
         EXPECT_EQ(both.to_prev, scatter_density(*scene, &path[j + 1], v, path[j - 1], chain_end_cos(path, j - 1, -1)))
             << name << ", vertex " << j;
+        // A connection's endpoint: the value and both densities from one call.
+        const Vec3 w_prev = direction_to(v, path[j - 1]), w_next = direction_to(v, path[j + 1]);
+        const ScatteringBothWays joined = scattering_both_ways(v, w_prev, w_next);
+        const Color f = caustica::scattering(v, w_prev, w_next);
+        EXPECT_TRUE(joined.f.r == f.r && joined.f.g == f.g && joined.f.b == f.b) << name << ", vertex " << j;
+        const DensityPair from_joined = area_densities(path[j - 1], v, path[j + 1], joined.forward, joined.backward);
+        EXPECT_EQ(from_joined.to_next, both.to_next) << name << ", vertex " << j;
+        EXPECT_EQ(from_joined.to_prev, both.to_prev) << name << ", vertex " << j;
         ++scattering;
         in_medium += v.in_medium();
       }

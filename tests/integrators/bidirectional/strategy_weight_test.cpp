@@ -5,7 +5,9 @@
 // each part's densities recomputed from scratch as its own subpath sampler
 // would see them, and the weights of all possible strategies summed. The
 // weight bdpt computes for the strategy that made the path (with the
-// densities the connection overrides) must also equal the recomputed one.
+// densities the connection overrides) must also equal the recomputed one,
+// and for s, t >= 2 be the same bit for bit when those densities come from
+// the ends' joint evaluation of value and densities, as bdpt takes them.
 // Both are checked to single-precision accuracy; the scenes cover area,
 // point, directional and environment lights and diffuse, glossy and delta
 // surfaces, and smooth plastic, whose vertices may leave through their delta
@@ -121,7 +123,7 @@ bool possible(const std::vector<PathVertex>& x, int sp) {
 
 // How many paths of each kind were checked.
 struct Tally {
-  int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0;
+  int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0, joined = 0;
 };
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
@@ -149,6 +151,18 @@ void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) 
         for (int sp = 0; sp <= k; ++sp)
           if (possible(x, sp)) sum += recomputed_weight(scene, x, sp, h);
         const float own = strategy_weight(scene, std::span(light).first(s), camera_part, s, t, h);
+        // bdpt's own route for s, t >= 2: the densities from the ends' joint evaluation.
+        if (s >= 2 && t >= 2 && joinable(light[s - 1]) && joinable(camera[t - 1])) {
+          const PathVertex &cv = camera[t - 1], &lv = light[s - 1];
+          const Vec3 w = direction_to(cv, lv);
+          const ScatteringBothWays at_camera = scattering_both_ways(cv, direction_to(cv, camera[t - 2]), w);
+          const ScatteringBothWays at_light = scattering_both_ways(lv, direction_to(lv, light[s - 2]), -w);
+          const float joined =
+              strategy_weight(std::span(light).first(s), camera_part, s, t, h,
+                              joined_densities(camera[t - 2], cv, at_camera, light[s - 2], lv, at_light));
+          ASSERT_EQ(joined, own) << "strategy (" << s << ", " << t << ") of sample " << i;
+          ++tally.joined;
+        }
         const float fresh = recomputed_weight(scene, x, s, h);
         ++tally.paths;
         tally.environment += x[0].environment && !delta_light(x[0]);
@@ -176,6 +190,7 @@ TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
     EXPECT_GT(tally.point_light, 100);
     EXPECT_GT(tally.directional, 100);
     EXPECT_GT(tally.through_delta, 100);
+    EXPECT_GT(tally.joined, 1000);
     std::printf("%d paths: %d from the environment, %d from point lights, %d from the sun, %d through delta lobes\n",
                 tally.paths, tally.environment, tally.point_light, tally.directional, tally.through_delta);
   }
