@@ -29,11 +29,6 @@ def spread(values):
     return statistics.median(values), min(values), max(values)
 
 
-def pass_seconds(one_pass, more_passes, passes):
-    """Seconds a pass, from the render loop of one pass and of 1 + `passes` passes."""
-    return (more_passes - one_pass) / passes
-
-
 def render_seconds(caustica, scene, res, out, integrator, spp):
     """The render loop's seconds and the samples it took."""
     metadata = caustica.render(scene, out, integrator=integrator, spp=spp, seed=1, res=res)
@@ -62,7 +57,7 @@ def main():
             ratios.append((bdpt_seconds / bdpt_samples) / (path_seconds / path_samples))
             one, _ = render_seconds(caustica, args.scene, args.sppm_res, out, sppm, 1)
             more, _ = render_seconds(caustica, args.scene, args.sppm_res, out, sppm, 1 + args.passes)
-            passes.append(pass_seconds(one, more, args.passes))
+            passes.append((more - one) / args.passes)
     print(f"{args.scene}, one thread, independent sampler, {args.repeat} runs each, taking turns")
     print(f"bdpt / path per sample ({args.res}x{args.res}, {args.spp} spp): "
           "median {:.2f}, {:.2f} to {:.2f}".format(*spread(ratios)))

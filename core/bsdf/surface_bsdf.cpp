@@ -23,30 +23,35 @@ float SurfaceBsdf::shading_correction(Vec3 wo_world, Vec3 wi_world) const {
   return den == 0 ? 0 : num / den;
 }
 
-Color SurfaceBsdf::eval(Vec3 wo_world, Vec3 wi_world) const {
+std::optional<SurfaceBsdf::LocalPair> SurfaceBsdf::local_pair(Vec3 wo_world, Vec3 wi_world) const {
   const Vec3 wo = frame_.to_local(wo_world), wi = frame_.to_local(wi_world);
-  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return {};
-  return bsdf_->eval(ctx_, wo, wi) * shading_correction(wo_world, wi_world);
+  // Both tests are symmetric in the two directions.
+  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return std::nullopt;
+  return LocalPair{wo, wi};
+}
+
+Color SurfaceBsdf::eval(Vec3 wo_world, Vec3 wi_world) const {
+  const auto w = local_pair(wo_world, wi_world);
+  if (!w) return {};
+  return bsdf_->eval(ctx_, w->wo, w->wi) * shading_correction(wo_world, wi_world);
 }
 
 float SurfaceBsdf::pdf(Vec3 wo_world, Vec3 wi_world) const {
-  const Vec3 wo = frame_.to_local(wo_world), wi = frame_.to_local(wi_world);
-  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return 0;
-  return bsdf_->pdf(ctx_, wo, wi);
+  const auto w = local_pair(wo_world, wi_world);
+  return w ? bsdf_->pdf(ctx_, w->wo, w->wi) : 0;
 }
 
 SurfaceBsdf::PdfPair SurfaceBsdf::pdfs(Vec3 wo_world, Vec3 wi_world) const {
-  const Vec3 wo = frame_.to_local(wo_world), wi = frame_.to_local(wi_world);
-  // Both tests are symmetric in the two directions.
-  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return {0, 0};
-  return {bsdf_->pdf(ctx_, wo, wi), bsdf_->pdf(ctx_, wi, wo)};
+  const auto w = local_pair(wo_world, wi_world);
+  if (!w) return {0, 0};
+  return {bsdf_->pdf(ctx_, w->wo, w->wi), bsdf_->pdf(ctx_, w->wi, w->wo)};
 }
 
 SurfaceBsdf::EvalPdfs SurfaceBsdf::eval_and_pdfs(Vec3 wo_world, Vec3 wi_world) const {
-  const Vec3 wo = frame_.to_local(wo_world), wi = frame_.to_local(wi_world);
-  if (wo.z == 0 || wi.z == 0 || !sides_agree(wo_world, wi_world, wo, wi, ng_)) return {{}, {0, 0}};
-  return {bsdf_->eval(ctx_, wo, wi) * shading_correction(wo_world, wi_world),
-          {bsdf_->pdf(ctx_, wo, wi), bsdf_->pdf(ctx_, wi, wo)}};
+  const auto w = local_pair(wo_world, wi_world);
+  if (!w) return {{}, {0, 0}};
+  return {bsdf_->eval(ctx_, w->wo, w->wi) * shading_correction(wo_world, wi_world),
+          {bsdf_->pdf(ctx_, w->wo, w->wi), bsdf_->pdf(ctx_, w->wi, w->wo)}};
 }
 
 std::optional<BsdfSample> SurfaceBsdf::sample(Vec3 wo_world, float u_lobe, Vec2 u) const {

@@ -51,6 +51,13 @@ class SurfaceBsdf {
 
  private:
   float shading_correction(Vec3 wo_world, Vec3 wi_world) const;
+  // A pair of world directions in the shading frame, or none where the BSDF
+  // is zero for any material: either in the tangent plane, or the geometric
+  // and shading sides disagreeing.
+  struct LocalPair {
+    Vec3 wo, wi;
+  };
+  std::optional<LocalPair> local_pair(Vec3 wo_world, Vec3 wi_world) const;
 
   const Bsdf* bsdf_;
   Frame frame_;

@@ -2,8 +2,9 @@
 // here in double precision: the point lies within its error bound of the
 // exact barycentric point, the geometric normal is the unit cross product
 // of the edges turned toward the interpolated vertex normal, the shading
-// normal is the interpolation of the unit vertex normals, normalised, uv and the tangents follow the
-// vertex uvs, and flip_normals turns both normals over.
+// normal is the interpolation of the unit vertex normals, normalised, uv
+// and the tangents follow the vertex uvs, and flip_normals turns both
+// normals over.
 
 #include "core/shapes/triangle_mesh.h"
 

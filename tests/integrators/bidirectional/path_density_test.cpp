@@ -95,8 +95,9 @@ float chain_end_cos(const std::vector<PathVertex>& path, size_t j, int step) {
 }
 
 // The densities both ways at a scattering vertex are scatter_density's
-// each way, bit for bit (as is a connection endpoint's value and densities
-// from scattering_both_ways: scattering's value, the same densities), and the subpaths' stored densities are the ones
+// each way, bit for bit (as are a connection end's value and densities
+// from scattering_both_ways: scattering's value, the same densities), and
+// the subpaths' stored densities are the ones
 // scatter_density and light_origin_density define, measured at the far
 // end of a specular chain for a vertex that starts one: through diffuse,
 // glossy, plastic, glass, mirror and participating-media vertices, on
