@@ -1,5 +1,7 @@
 #include "core/render/path_settings.h"
 
+#include <string>
+
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -19,11 +21,12 @@ PathSettings read_path_settings(const Properties& props) {
   return s;
 }
 
-std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more) {
+std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more, int64_t rr_depth) {
   std::vector<ParamSpec> params{
       {"max_depth", ParamType::Integer, "-1",
        "longest path in segments; -1 for no limit, 0 renders black, 1 emitters only, 2 direct light only"},
-      {"rr_depth", ParamType::Integer, "5", "path vertices before Russian roulette may end a path"},
+      {"rr_depth", ParamType::Integer, std::to_string(rr_depth),
+       "path vertices before Russian roulette may end a path"},
       {"rr_max_survival", ParamType::Float, "0.95", "upper bound on the survival probability, in (0, 1]"},
       {"rr_threshold", ParamType::Float, "0.1",
        "camera paths meet Russian roulette only once their throughput falls below this; 1e30 for any throughput"},

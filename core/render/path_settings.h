@@ -28,7 +28,8 @@ struct PathSettings {
 
 PathSettings read_path_settings(const Properties& props);
 
-// The declarations of those parameters, followed by `more`.
-std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more = {});
+// The declarations of those parameters, rr_depth's default given, followed
+// by `more`.
+std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more = {}, int64_t rr_depth = 5);
 
 }  // namespace caustica

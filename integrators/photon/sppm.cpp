@@ -25,7 +25,13 @@
 // for a seed.
 //
 // max_depth limits the whole path, a photon's segments included; rr_depth
-// counts a photon path's vertices before Russian roulette may end it.
+// counts a photon path's vertices before Russian roulette may end it. Its
+// default is 1, not the 5 of the other integrators: a photon then survives
+// each bounce with about the probability its power would have kept, so
+// photons carry about equal power and none is traced on for the little it
+// still carries. At equal passes that cost up to 1.5x the relative MSE
+// (less in fog) and saved 25 to 38 % of the time: relMSE x time 0.65 to
+// 1.01 on the Cornell boxes measured (README).
 //
 //   <integrator type="sppm"><integer name="photons" value="200000"/></integrator>
 
@@ -251,7 +257,8 @@ CAUSTICA_REGISTER_PLUGIN(
     path_settings_params({{"photons", ParamType::Integer, "100000", "photons traced per iteration"},
                           {"radius", ParamType::Float, "0",
                            "initial radius; 0 for 1/200 of the scene's bounding-box diagonal"},
-                          {"alpha", ParamType::Float, "0.7", "fraction of new photons kept per iteration, in (0, 1)"}}),
+                          {"alpha", ParamType::Float, "0.7", "fraction of new photons kept per iteration, in (0, 1)"}},
+                         1),
     {});
 
 }  // namespace caustica
