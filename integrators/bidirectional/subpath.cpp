@@ -27,7 +27,13 @@ class SubpathRecorder {
     return WalkAction::Continue;
   }
 
+  // A free flight shorter than the float spacing at its origin puts the
+  // event on the vertex before it, and no direction joins the two: their
+  // densities would be 0 / 0. Such paths have measure zero in the path
+  // integral, so the subpath ends there rather than carry a NaN into every
+  // strategy built on it.
   WalkAction at_medium_vertex(const MediumVertex& m) {
+    if (!path_.back().environment && m.p == path_.back().p()) return WalkAction::Stop;
     PathVertex& v = path_.emplace_back();
     v.kind = PathVertex::Kind::Medium;
     v.si.p = m.p;

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "core/loader/scene_loader.h"
 #include "core/registry/properties.h"
@@ -174,6 +175,68 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
   EXPECT_GT(delta, 50);
   EXPECT_GT(chains, 50);
   EXPECT_GT(to_environment, 20);
+}
+
+// `first` for the first number a sample draws, `rest` for every later one:
+// with rest = 1e-9 each free flight after the first is about 1e-9 / sigma_t
+// long, below the float spacing at its origin.
+class ScriptedSampler final : public Sampler {
+ public:
+  ScriptedSampler(float first, float rest) : Sampler(1), first_(first), rest_(rest) {}
+  std::unique_ptr<Sampler> clone() const override { return std::make_unique<ScriptedSampler>(first_, rest_); }
+  void start_sample(SampleKey, uint64_t, uint64_t) override { drawn_ = false; }
+  float next_1d() override { return std::exchange(drawn_, true) ? rest_ : first_; }
+  Vec2 next_2d() override {
+    const float a = next_1d();
+    return {a, next_1d()};
+  }
+
+ private:
+  float first_, rest_;
+  bool drawn_ = false;
+};
+
+void expect_distinct_vertices_and_finite_densities(const std::vector<PathVertex>& path) {
+  for (size_t i = 0; i < path.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(path[i].pdf_fwd)) << i;
+    EXPECT_TRUE(std::isfinite(path[i].pdf_rev)) << i;
+    if (i > 0) {
+      EXPECT_NE(path[i].p(), path[i - 1].p()) << i;
+    }
+  }
+}
+
+TEST(PathDensity, AScatteringEventOnThePreviousVertexEndsTheSubpath) {
+  // The camera and a point light inside a fog ball. The camera subpath's
+  // first free flight (drawn with 0.3) goes 0.18 on, the next (1e-9) rounds
+  // back onto that vertex; the light subpath's first rounds onto the light.
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><medium type='homogeneous' id='fog'><float name='sigma_t' value='2'/>"
+      "<float name='albedo' value='0.8'/></medium>"
+      "<sensor type='perspective'><ref id='fog'/><transform name='to_world'>"
+      "<lookat origin='0.7, 0.6, 0.5' target='0, 0, 0'/></transform>"
+      "<film type='hdrfilm'><integer name='width' value='4'/><integer name='height' value='4'/></film></sensor>"
+      "<shape type='sphere'><float name='radius' value='2'/><ref name='interior' id='fog'/></shape>"
+      "<emitter type='point'><point name='position' x='0.4' y='0.3' z='-0.6'/><rgb name='intensity' value='1'/>"
+      "<ref id='fog'/></emitter></scene>");
+  const PathSettings settings{8, 5, 0.95f, 0.1f, false};
+  const Ray ray = scene->sensor().generate_ray({2, 2}, {0.5f, 0.5f});
+  std::vector<PathVertex> camera, light;
+  for (const float rest : {1e-9f, 0.3f}) {
+    ScriptedSampler sampler(0.3f, rest);
+    sampler.start_sample(SampleKey::camera({2, 2}), 0, 0);
+    trace_camera_subpath(*scene, ray, sampler, settings, camera);
+    compute_densities(*scene, camera);
+    expect_distinct_vertices_and_finite_densities(camera);
+    sampler.start_sample(SampleKey::light_path({2, 2}), 0, 0);
+    trace_light_subpath(*scene, sampler, settings, light);
+    compute_densities(*scene, light);
+    expect_distinct_vertices_and_finite_densities(light);
+    // With 0.3 throughout, flights of 0.18 scatter on to the length limit.
+    const size_t expected_camera = rest > 0.1f ? 9 : 2, expected_light = rest > 0.1f ? 8 : 1;
+    EXPECT_EQ(camera.size(), expected_camera) << rest;
+    EXPECT_EQ(light.size(), expected_light) << rest;
+  }
 }
 
 }  // namespace
