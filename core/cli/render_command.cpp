@@ -14,6 +14,7 @@
 #include "core/job/distributed_render.h"
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
+#include "core/job/replay_command.h"
 
 namespace caustica {
 
@@ -69,11 +70,6 @@ std::filesystem::path linear_output(const std::string& output, const std::string
   const FileFormat format = film.output().file;
   const char* ext = format == FileFormat::Rgbe ? ".hdr" : format == FileFormat::Pfm ? ".pfm" : ".exr";
   return std::filesystem::path(scene).stem().string() + ext;
-}
-
-std::string replay_command(const std::string& scene, SampleId id, uint64_t seed) {
-  return "caustica render " + scene + " --seed " + std::to_string(seed) + " --debug-pixel " +
-         std::to_string(id.pixel.x) + "," + std::to_string(id.pixel.y) + " --debug-sample " + std::to_string(id.index);
 }
 
 }  // namespace
@@ -218,7 +214,7 @@ int RenderCommand::render(const RankSession* session) const {
   if (stats.dropped > 0)
     std::fprintf(stderr, "caustica: warning: %llu non-finite samples were dropped; replay the first with:\n  %s\n",
                  static_cast<unsigned long long>(stats.dropped),
-                 replay_command(scene_, stats.first_dropped, seed_).c_str());
+                 replay_command(scene_, defines_, settings, stats.first_dropped).c_str());
   if (distributed) end_distributed(*distributed, stats, *session, exr);
   return 0;
 }
