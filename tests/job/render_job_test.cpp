@@ -35,7 +35,7 @@ TEST(RenderJob, AnOverrideKeepsTheSettingsTheScenesIntegratorShares) {
   const std::string path =
       "<integrator type='path'><integer name='max_depth' value='65'/>"
       "<boolean name='hide_emitters' value='true'/></integrator>";
-  EXPECT_THAT(described(path, "bdpt"), StartsWith("bdpt max_depth=65 rr_depth=5"));
+  EXPECT_THAT(described(path, "bdpt"), StartsWith("bdpt max_depth=65 rr_depth=1"));
   EXPECT_THAT(described(path, "bdpt"), HasSubstr("hide_emitters=true"));
   EXPECT_THAT(described(path, "bdpt:max_depth=4"), StartsWith("bdpt max_depth=4 "));
   EXPECT_THAT(described(path, "ptracer:rr_depth=2"), StartsWith("ptracer max_depth=65 rr_depth=2"));
@@ -44,7 +44,8 @@ TEST(RenderJob, AnOverrideKeepsTheSettingsTheScenesIntegratorShares) {
   const std::string photon = "<integrator type='photon'><integer name='photons' value='1234'/></integrator>";
   EXPECT_THAT(described(photon, "sppm"), HasSubstr("photons=1234"));
   EXPECT_THAT(described(photon, "sppm:photons=99"), HasSubstr("photons=99 "));
-  // sppm's photons roulette from the first bounce unless the scene says otherwise.
+  // bdpt's light subpaths and sppm's photons roulette from the first bounce
+  // unless the scene says otherwise.
   EXPECT_THAT(described(path, "sppm"), StartsWith("sppm max_depth=65 rr_depth=1 "));
   EXPECT_THAT(described("<integrator type='path'><integer name='rr_depth' value='5'/></integrator>", "sppm"),
               StartsWith("sppm max_depth=-1 rr_depth=5 "));

@@ -375,7 +375,7 @@ TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
 TEST(SceneLoader, IntegratorSpecWithParameters) {
   const auto bdpt = make_integrator("bdpt:max_depth=3,mis=balance,strategy_layers=2");
   EXPECT_EQ(bdpt->describe(),
-            "bdpt max_depth=3 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=false "
+            "bdpt max_depth=3 rr_depth=1 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=false "
             "mis=balance strategy_layers=2");
   EXPECT_EQ(make_integrator("path:hide_emitters=true")->describe(),
             "path max_depth=-1 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=true");

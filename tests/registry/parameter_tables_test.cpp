@@ -51,7 +51,7 @@ TEST(EffectiveParameters, FollowTheDeclarationsWithTheValuesUsed) {
             "direct emitter_samples=4 bsdf_samples=2 shading_samples=4 hide_emitters=false");
   const PluginInfo* bdpt = Registry::instance().find("integrator", "bdpt");
   EXPECT_EQ(bdpt->create(Properties(*bdpt, {"test.xml", 1}))->describe_parameters(),
-            "bdpt max_depth=-1 rr_depth=5 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=false mis=power "
+            "bdpt max_depth=-1 rr_depth=1 rr_max_survival=0.950000 rr_threshold=0.100000 hide_emitters=false mis=power "
             "strategy_layers=0");
 }
 
