@@ -152,7 +152,10 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       if (!choice) return {};
       const auto ls = choice->emitter->sample_Li({cv.p(), cv.si.p_error, cv.si.ng}, u);
       if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) return {};
-      Color f = scattering(cv, wo, ls->wi);
+      // The value and both densities at the camera end from one frame
+      // transform (ls->wi is direction_to(cv, the light point) bit for bit).
+      const ScatteringBothWays at_camera = scattering_both_ways(cv, wo, ls->wi);
+      Color f = at_camera.f;
       if (f.is_black()) return {};
       f *= shadow_visibility(scene, shadow_ray(cv.si, *ls), medium_toward(cv, ls->wi), sampler);
       if (f.is_black()) return {};
@@ -166,7 +169,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
       lv.si.ng = ls->n;
       lv.delta_light = ls->is_delta;
       lv.pdf_fwd = light_origin_density(scene, lv);
-      const float w = strategy_weight(scene, {&lv, 1}, camera_part, 1, t, heuristic_);
+      const float w = strategy_weight({&lv, 1}, camera_part, 1, t, heuristic_,
+                                      light_sample_densities(scene, camera[t - 2], cv, at_camera, lv));
       return cv.beta * f * emission_for(*choice->emitter, ls->Li, wavelengths) * (w / (choice->pmf * ls->pdf));
     }
     const PathVertex& lv = light[s - 1];

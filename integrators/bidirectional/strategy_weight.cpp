@@ -49,6 +49,15 @@ ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVe
           .camera_before_end = camera_side.to_prev};
 }
 
+ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex& camera_prev,
+                                           const PathVertex& camera_end, const ScatteringBothWays& at_camera,
+                                           const PathVertex& light) {
+  const DensityPair camera_side = area_densities(camera_prev, camera_end, light, at_camera.forward, at_camera.backward);
+  return {.light_end = camera_side.to_next,
+          .camera_end = scatter_density(scene, nullptr, light, camera_end),
+          .camera_before_end = camera_side.to_prev};
+}
+
 float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std::span<const PathVertex> camera, int s,
                       int t, MisHeuristic heuristic) {
   return strategy_weight(light, camera, s, t, heuristic, connection_densities(scene, light, camera, s, t));

@@ -41,6 +41,13 @@ ConnectionDensities connection_densities(const Scene& scene, std::span<const Pat
 ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVertex& camera_end,
                                      const ScatteringBothWays& at_camera, const PathVertex& light_prev,
                                      const PathVertex& light_end, const ScatteringBothWays& at_light);
+// The same for strategy (1, t) with t >= 2, camera[t-1] joined to the
+// point `light` sampled on an emitter, from what scattering_both_ways gave
+// at the camera end (toward camera[t-2] and the light point): bdpt has it
+// with the BSDF value.
+ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex& camera_prev,
+                                           const PathVertex& camera_end, const ScatteringBothWays& at_camera,
+                                           const PathVertex& light);
 // The weight from densities the caller already has.
 float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
                       MisHeuristic heuristic, const ConnectionDensities& densities);

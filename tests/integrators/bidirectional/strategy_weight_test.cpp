@@ -123,7 +123,7 @@ bool possible(const std::vector<PathVertex>& x, int sp) {
 
 // How many paths of each kind were checked.
 struct Tally {
-  int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0, joined = 0;
+  int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0, joined = 0, light_sampled = 0;
 };
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
@@ -163,6 +163,16 @@ void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) 
           ASSERT_EQ(joined, own) << "strategy (" << s << ", " << t << ") of sample " << i;
           ++tally.joined;
         }
+        // Its route for s = 1: a point sampled on an emitter.
+        if (s == 1 && t >= 2 && joinable(camera[t - 1])) {
+          const PathVertex& cv = camera[t - 1];
+          const ScatteringBothWays at_camera =
+              scattering_both_ways(cv, direction_to(cv, camera[t - 2]), direction_to(cv, light[0]));
+          const float sampled = strategy_weight(std::span(light).first(1), camera_part, 1, t, h,
+                                                light_sample_densities(scene, camera[t - 2], cv, at_camera, light[0]));
+          ASSERT_EQ(sampled, own) << "strategy (1, " << t << ") of sample " << i;
+          ++tally.light_sampled;
+        }
         const float fresh = recomputed_weight(scene, x, s, h);
         ++tally.paths;
         tally.environment += x[0].environment && !delta_light(x[0]);
@@ -191,8 +201,12 @@ TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
     EXPECT_GT(tally.directional, 100);
     EXPECT_GT(tally.through_delta, 100);
     EXPECT_GT(tally.joined, 1000);
-    std::printf("%d paths: %d from the environment, %d from point lights, %d from the sun, %d through delta lobes\n",
-                tally.paths, tally.environment, tally.point_light, tally.directional, tally.through_delta);
+    EXPECT_GT(tally.light_sampled, 1000);
+    std::printf(
+        "%d paths: %d from the environment, %d from point lights, %d from the sun, %d through delta lobes; %d and "
+        "%d weighed from joint evaluations (s, t >= 2; s = 1)\n",
+        tally.paths, tally.environment, tally.point_light, tally.directional, tally.through_delta, tally.joined,
+        tally.light_sampled);
   }
 }
 
