@@ -14,12 +14,12 @@
 // max_depth counts the segments of the whole path; rr_depth counts the
 // vertices of each subpath before Russian roulette may end it. Its default
 // is 1, not path's 5: light subpaths then survive each bounce with about
-// the share of power it left them, as sppm's photons do (camera subpaths
-// still meet roulette only below rr_threshold). Every connection a vertex
-// would have made is work, so shorter light subpaths cost less a sample
-// for somewhat more noise: relMSE x time 0.48 to 0.95 of rr_depth 5's on
-// the Cornell boxes measured (README). `mis` picks
-// the heuristic: power (exponent 2) or balance. With strategy_layers = n
+// the share of their power the bounce left them, as sppm's photons do
+// (camera subpaths still meet roulette only below rr_threshold). Every
+// connection a vertex would have made is work, so shorter light subpaths
+// cost less a sample for somewhat more noise: relMSE x time 0.48 to 0.95
+// of rr_depth 5's on the Cornell boxes measured (README). `mis` picks the
+// heuristic: power (exponent 2) or balance. With strategy_layers = n
 // (at most 12) the output also holds, for every path length k = 1 .. n
 // segments and each of its k + 1 strategies (s, t) with s + t - 1 = k, the
 // strategy's weighted contribution as the layer sStT (channels such as
