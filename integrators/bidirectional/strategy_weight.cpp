@@ -10,6 +10,22 @@ namespace {
 // reading them as 1 lets the discrete choices cancel.
 float remap(float pdf) { return pdf != 0 ? pdf : 1; }
 
+// What the end of a subpath of n vertices, side[n-1], gives when joined to
+// `other`: the density of sampling `other` from it, and that of sampling
+// side[n-2] back from it (0 when the end starts its subpath).
+DensityPair end_densities(const Scene& scene, std::span<const PathVertex> side, int n, const PathVertex& other) {
+  if (n >= 2) return scatter_densities(side[n - 2], side[n - 1], other);
+  return {scatter_density(scene, nullptr, side[0], other), 0};
+}
+
+// The connection's densities from what its two ends give (end_densities).
+ConnectionDensities from_ends(DensityPair camera_side, DensityPair light_side) {
+  return {.light_end = camera_side.to_next,
+          .light_before_end = light_side.to_prev,
+          .camera_end = light_side.to_next,
+          .camera_before_end = camera_side.to_prev};
+}
+
 }  // namespace
 
 ConnectionDensities connection_densities(const Scene& scene, std::span<const PathVertex> light,
@@ -20,42 +36,21 @@ ConnectionDensities connection_densities(const Scene& scene, std::span<const Pat
     if (t >= 2) d.camera_before_end = emission_density(camera[t - 1], camera[t - 2], camera[t - 2].chain_cos_bwd);
     return d;
   }
-  if (t >= 2) {
-    const DensityPair pair = scatter_densities(camera[t - 2], camera[t - 1], light[s - 1]);
-    d.light_end = pair.to_next;
-    d.camera_before_end = pair.to_prev;
-  } else {
-    d.light_end = scatter_density(scene, nullptr, camera[0], light[s - 1]);
-  }
-  if (s >= 2) {
-    const DensityPair pair = scatter_densities(light[s - 2], light[s - 1], camera[t - 1]);
-    d.camera_end = pair.to_next;
-    d.light_before_end = pair.to_prev;
-  } else {
-    d.camera_end = scatter_density(scene, nullptr, light[0], camera[t - 1]);
-  }
-  return d;
+  return from_ends(end_densities(scene, camera, t, light[s - 1]), end_densities(scene, light, s, camera[t - 1]));
 }
 
 ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVertex& camera_end,
                                      const ScatteringBothWays& at_camera, const PathVertex& light_prev,
                                      const PathVertex& light_end, const ScatteringBothWays& at_light) {
-  const DensityPair camera_side =
-      area_densities(camera_prev, camera_end, light_end, at_camera.forward, at_camera.backward);
-  const DensityPair light_side = area_densities(light_prev, light_end, camera_end, at_light.forward, at_light.backward);
-  return {.light_end = camera_side.to_next,
-          .light_before_end = light_side.to_prev,
-          .camera_end = light_side.to_next,
-          .camera_before_end = camera_side.to_prev};
+  return from_ends(area_densities(camera_prev, camera_end, light_end, at_camera.forward, at_camera.backward),
+                   area_densities(light_prev, light_end, camera_end, at_light.forward, at_light.backward));
 }
 
 ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex& camera_prev,
                                            const PathVertex& camera_end, const ScatteringBothWays& at_camera,
                                            const PathVertex& light) {
-  const DensityPair camera_side = area_densities(camera_prev, camera_end, light, at_camera.forward, at_camera.backward);
-  return {.light_end = camera_side.to_next,
-          .camera_end = scatter_density(scene, nullptr, light, camera_end),
-          .camera_before_end = camera_side.to_prev};
+  return from_ends(area_densities(camera_prev, camera_end, light, at_camera.forward, at_camera.backward),
+                   end_densities(scene, {&light, 1}, 1, camera_end));
 }
 
 float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std::span<const PathVertex> camera, int s,
