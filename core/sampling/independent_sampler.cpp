@@ -13,7 +13,7 @@ namespace {
 
 // Dimensions one sample may consume before it would run into the next
 // sample's stream; far beyond any path's needs.
-constexpr Pcg32::Jump kDimensionsPerSample = Pcg32::jump(uint64_t(1) << 20);
+constexpr Pcg32::Stride kDimensionsPerSample(uint64_t(1) << 20);
 
 class IndependentSampler final : public Sampler {
  public:

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <bit>
 #include <cstdint>
 
 #include "core/math/constants.h"
@@ -41,15 +43,39 @@ class Pcg32 {
   static constexpr Jump kStep{0x5851f42d4c957f2dULL, 1};
   static constexpr Jump jump(uint64_t steps) { return compose(kStep, steps); }
 
+  // A stride of `steps` steps, with its map raised to every power of two
+  // once: a jump of `count` strides then composes only the maps of count's
+  // set bits (maps of one stride commute, so their order does not matter).
+  class Stride {
+   public:
+    explicit constexpr Stride(uint64_t steps) {
+      Jump j = jump(steps);
+      for (Jump& power : powers_) {
+        power = j;
+        j = {j.mult * j.mult, (j.mult + 1) * j.plus_per_inc};
+      }
+    }
+    constexpr Jump power_of_two(int k) const { return powers_[size_t(k)]; }
+
+   private:
+    std::array<Jump, 64> powers_{};
+  };
+
   // Jumps `delta` steps ahead in O(log delta) (Brown, "Random number
   // generation with arbitrary strides", 1994).
-  void advance(uint64_t delta) { advance(delta, kStep); }
-  // Jumps `count` times `stride` ahead, in O(log count): with the stride's
-  // map computed once, a sample's skip-ahead costs the bits of its index
-  // rather than those of index times stride.
-  void advance(uint64_t count, Jump stride) {
-    const Jump j = compose(stride, count);
+  void advance(uint64_t delta) {
+    const Jump j = jump(delta);
     state_ = j.mult * state_ + j.plus_per_inc * inc_;
+  }
+  // Jumps `count` times `stride` ahead, in as many steps as count has set bits.
+  void advance(uint64_t count, const Stride& stride) {
+    uint64_t mult = 1, plus = 0;
+    for (; count != 0; count &= count - 1) {
+      const Jump j = stride.power_of_two(std::countr_zero(count));
+      mult *= j.mult;
+      plus = plus * j.mult + j.plus_per_inc;
+    }
+    state_ = mult * state_ + plus * inc_;
   }
 
  private:

@@ -36,14 +36,27 @@ TEST(Pcg32, AdvanceMatchesStepping) {
 TEST(Pcg32, StridedAdvanceMatchesStepping) {
   Pcg32 a(42, 54), b(42, 54), c(42, 54);
   for (int i = 0; i < 3 * 37; ++i) a.next_u32();
-  b.advance(3, Pcg32::jump(37));
+  b.advance(3, Pcg32::Stride(37));
   c.advance(uint64_t(5) << 40);
   Pcg32 d(42, 54);
-  d.advance(uint64_t(5) << 20, Pcg32::jump(uint64_t(1) << 20));
+  d.advance(uint64_t(5) << 20, Pcg32::Stride(uint64_t(1) << 20));
   for (int i = 0; i < 4; ++i) {
     EXPECT_EQ(a.next_u32(), b.next_u32());
     EXPECT_EQ(c.next_u32(), d.next_u32());
   }
+}
+
+TEST(Pcg32, StrideJumpsOfManyBitsMatchOneLongJump) {
+  for (const uint64_t count : {uint64_t(11), uint64_t(0xdeadbeef), ~uint64_t(0) >> 21}) {
+    Pcg32 strided(7, 3), direct(7, 3);
+    strided.advance(count, Pcg32::Stride(uint64_t(1) << 20));
+    direct.advance(count << 20);
+    EXPECT_EQ(strided.next_u32(), direct.next_u32()) << count;
+  }
+  Pcg32 stepped(7, 3), strided(7, 3);
+  for (int i = 0; i < 11 * 37; ++i) stepped.next_u32();
+  strided.advance(11, Pcg32::Stride(37));
+  EXPECT_EQ(stepped.next_u32(), strided.next_u32());
 }
 
 // What every sampler promises, checked for each.
