@@ -54,6 +54,7 @@ void PhotonMap::build(std::span<const Photon> photons, float radius) {
   start_.resize(size_t(buckets) + 1);
   start_[buckets] = uint32_t(n);
   photons_.resize(n);
+  positions_.resize(n);
   tbb::parallel_for(uint32_t(0), ranges, [&](uint32_t r) {
     const uint32_t first_bucket = r << shift, width = uint32_t(1) << shift;
     uint32_t* start = &start_[first_bucket];
@@ -69,7 +70,9 @@ void PhotonMap::build(std::span<const Photon> photons, float radius) {
     // start[b] moves to the bucket's end while photons arrive, then back.
     for (uint32_t k = begin; k < end; ++k) {
       const uint32_t i = by_range_[k];
-      photons_[start[bucket_of_[i] - first_bucket]++] = photons[i];
+      const uint32_t to = start[bucket_of_[i] - first_bucket]++;
+      photons_[to] = photons[i];
+      positions_[to] = photons[i].p;
     }
     for (uint32_t b = width; b-- > 1;) start[b] = start[b - 1];
     start[0] = begin;
