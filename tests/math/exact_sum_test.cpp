@@ -54,6 +54,29 @@ TEST(ExactSum, HoldsTheExactSumOfItsTerms) {
   }
 }
 
+// Terms that cancel the running sum but for a little: the sum left is
+// exact and small, while the rest still holds what earlier terms left over.
+TEST(ExactSum, HoldsTheExactSumThroughCancellations) {
+  std::mt19937_64 rng(23);
+  std::uniform_int_distribution<int64_t> little(-(int64_t(1) << 20), int64_t(1) << 20);
+  std::uniform_int_distribution<int> exponent(kFinestBit, kFinestBit + 30);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::vector<double> xs = terms(rng, 1 + size_t(trial % 20));
+    ExactSum s = sum_of(xs);
+    __int128 exact = 0;
+    for (double x : xs) exact += units(x);
+    for (int step = 0; step < 40; ++step) {
+      const double x = -s.value() + std::ldexp(double(little(rng)), exponent(rng));
+      s.add(x);
+      exact += units(x);
+      const __int128 remainder = exact - units(s.value());
+      const double half_ulp = std::ldexp(std::nextafter(std::abs(s.value()), INFINITY) - std::abs(s.value()), -1);
+      ASSERT_LE(std::abs(double(remainder)), std::ldexp(half_ulp, -kFinestBit)) << trial << " " << step;
+      ASSERT_EQ(units(s.rest()), remainder) << trial << " " << step;
+    }
+  }
+}
+
 TEST(ExactSum, KeepsWhatAPlainDoubleLoses) {
   ExactSum s;
   for (double x : {1e16, 1.0, -1e16}) s.add(x);
