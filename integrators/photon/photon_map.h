@@ -114,7 +114,7 @@ class PhotonMap {
   std::vector<Photon> photons_;  // grouped by bucket
   // The photons' positions again, packed: a query tests the positions of
   // every photon in the cells it visits but reads the rest of few, so the
-  // test reads a quarter of the memory (a query's time is mostly its cache
+  // test reads about a fifth of the memory (a query's time is mostly its cache
   // misses).
   std::vector<Vec3> positions_;
   std::vector<uint32_t> start_;  // photons of bucket b: [start_[b], start_[b + 1])
