@@ -35,13 +35,12 @@ class Pcg32 {
   // Uniform in [0, 1): the top 24 bits, so every value is exactly representable.
   float next_float() { return float(next_u32() >> 8) * 0x1p-24f; }
 
-  // `steps` steps of the generator as one affine map of the state:
+  // Steps of the generator as one affine map of the state:
   // state -> mult * state + plus_per_inc * inc (all modulo 2^64).
   struct Jump {
     uint64_t mult, plus_per_inc;
   };
   static constexpr Jump kStep{0x5851f42d4c957f2dULL, 1};
-  static constexpr Jump jump(uint64_t steps) { return compose(kStep, steps); }
 
   // A stride of `steps` steps, with its map raised to every power of two
   // once: a jump of `count` strides then composes only the maps of count's
@@ -49,10 +48,10 @@ class Pcg32 {
   class Stride {
    public:
     explicit constexpr Stride(uint64_t steps) {
-      Jump j = jump(steps);
+      Jump j = repeated(kStep, steps);
       for (Jump& power : powers_) {
         power = j;
-        j = {j.mult * j.mult, (j.mult + 1) * j.plus_per_inc};
+        j = then(j, j);
       }
     }
     constexpr Jump power_of_two(int k) const { return powers_[size_t(k)]; }
@@ -63,36 +62,25 @@ class Pcg32 {
 
   // Jumps `delta` steps ahead in O(log delta) (Brown, "Random number
   // generation with arbitrary strides", 1994).
-  void advance(uint64_t delta) {
-    const Jump j = jump(delta);
-    state_ = j.mult * state_ + j.plus_per_inc * inc_;
-  }
+  void advance(uint64_t delta) { apply(repeated(kStep, delta)); }
   // Jumps `count` times `stride` ahead, in as many steps as count has set bits.
   void advance(uint64_t count, const Stride& stride) {
-    uint64_t mult = 1, plus = 0;
-    for (; count != 0; count &= count - 1) {
-      const Jump j = stride.power_of_two(std::countr_zero(count));
-      mult *= j.mult;
-      plus = plus * j.mult + j.plus_per_inc;
-    }
-    state_ = mult * state_ + plus * inc_;
+    Jump total{1, 0};
+    for (; count != 0; count &= count - 1) total = then(total, stride.power_of_two(std::countr_zero(count)));
+    apply(total);
   }
 
  private:
+  // `a`, then `b`.
+  static constexpr Jump then(Jump a, Jump b) { return {a.mult * b.mult, a.plus_per_inc * b.mult + b.plus_per_inc}; }
   // `j` applied `count` times, by squaring.
-  static constexpr Jump compose(Jump j, uint64_t count) {
-    uint64_t mult = j.mult, plus = j.plus_per_inc, acc_mult = 1, acc_plus = 0;
-    while (count > 0) {
-      if (count & 1) {
-        acc_mult *= mult;
-        acc_plus = acc_plus * mult + plus;
-      }
-      plus = (mult + 1) * plus;
-      mult *= mult;
-      count /= 2;
-    }
-    return {acc_mult, acc_plus};
+  static constexpr Jump repeated(Jump j, uint64_t count) {
+    Jump total{1, 0};
+    for (; count > 0; count /= 2, j = then(j, j))
+      if (count & 1) total = then(total, j);
+    return total;
   }
+  void apply(Jump j) { state_ = j.mult * state_ + j.plus_per_inc * inc_; }
 
   uint64_t state_ = 0, inc_ = 0;
 };
