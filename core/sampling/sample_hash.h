@@ -1,6 +1,7 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 #include "core/sampling/pcg32.h"
@@ -16,8 +17,25 @@ inline uint64_t sample_hash(SampleKey key, uint64_t seed, uint64_t block) {
                   mix_bits(block + 0x9e3779b97f4a7c15ULL));
 }
 
+namespace detail {
+constexpr uint64_t dimension_key(uint64_t dimension) { return mix_bits(dimension * 0x9e3779b97f4a7c15ULL); }
+// The keys of the dimensions a path reaches, known at compile time: one
+// hash less on every draw's chain of dependent multiplications.
+constexpr size_t kTabledDimensions = 256;
+struct DimensionKeys {
+  uint64_t key[kTabledDimensions] = {};
+};
+constexpr DimensionKeys make_dimension_keys() {
+  DimensionKeys t;
+  for (size_t d = 0; d < kTabledDimensions; ++d) t.key[d] = dimension_key(d);
+  return t;
+}
+inline constexpr DimensionKeys kDimensionKeys = make_dimension_keys();
+}  // namespace detail
+
 inline uint64_t dimension_hash(uint64_t sample, uint64_t dimension) {
-  return mix_bits(sample ^ mix_bits(dimension * 0x9e3779b97f4a7c15ULL));
+  return mix_bits(sample ^ (dimension < detail::kTabledDimensions ? detail::kDimensionKeys.key[dimension]
+                                                                  : detail::dimension_key(dimension)));
 }
 
 // A bijection on [0, n) chosen by `seed`: an invertible hash of the low

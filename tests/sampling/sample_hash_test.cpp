@@ -1,7 +1,8 @@
 // The hashed permutation the stratifying samplers share: a bijection on
 // [0, n) for every seed, and, over seeds, each i sent to each image equally
 // often (chi-square at 1 %, Sidak-corrected over the cases), for powers of
-// two and others alike. Seeds are a fixed sequence of hashes.
+// two and others alike. Seeds are a fixed sequence of hashes. And the
+// per-dimension hash, whose first keys are tabled.
 
 #include "core/sampling/sample_hash.h"
 
@@ -35,6 +36,19 @@ TEST(HashedPermutation, SendsEachIndexToEachImageEquallyOftenOverSeeds) {
       const test::Chi2Result r = test::chi2_test_counts(observed, expected);
       EXPECT_GT(r.p_value, alpha) << "n " << n << ", index " << i << ": " << r.report;
     }
+}
+
+// The tabled dimension keys are the hash they stand for, across the end
+// of the table: the murmur finaliser is written out here again.
+TEST(DimensionHash, EqualsTheHashOfTheDimensionAcrossTheTable) {
+  const auto finalise = [](uint64_t v) {
+    v = (v ^ (v >> 33)) * 0xff51afd7ed558ccdULL;
+    v = (v ^ (v >> 33)) * 0xc4ceb9fe1a85ec53ULL;
+    return v ^ (v >> 33);
+  };
+  for (const uint64_t sample : {uint64_t(0), uint64_t(0x243f6a8885a308d3ULL)})
+    for (uint64_t d = 0; d < 300; ++d)
+      ASSERT_EQ(dimension_hash(sample, d), finalise(sample ^ finalise(d * 0x9e3779b97f4a7c15ULL))) << "dimension " << d;
 }
 
 }  // namespace
