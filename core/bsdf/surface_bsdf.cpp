@@ -41,6 +41,12 @@ float SurfaceBsdf::pdf(Vec3 wo_world, Vec3 wi_world) const {
   return w ? bsdf_->pdf(ctx_, w->wo, w->wi) : 0;
 }
 
+SurfaceBsdf::EvalPdf SurfaceBsdf::eval_and_pdf(Vec3 wo_world, Vec3 wi_world) const {
+  const auto w = local_pair(wo_world, wi_world);
+  if (!w) return {{}, 0};
+  return {bsdf_->eval(ctx_, w->wo, w->wi) * shading_correction(wo_world, wi_world), bsdf_->pdf(ctx_, w->wo, w->wi)};
+}
+
 SurfaceBsdf::PdfPair SurfaceBsdf::pdfs(Vec3 wo_world, Vec3 wi_world) const {
   const auto w = local_pair(wo_world, wi_world);
   if (!w) return {0, 0};

@@ -30,6 +30,12 @@ class SurfaceBsdf {
 
   Color eval(Vec3 wo_world, Vec3 wi_world) const;
   float pdf(Vec3 wo_world, Vec3 wi_world) const;
+  // eval(wo, wi) with pdf(wo, wi), the frame transforms done once.
+  struct EvalPdf {
+    Color f;
+    float pdf;
+  };
+  EvalPdf eval_and_pdf(Vec3 wo_world, Vec3 wi_world) const;
   // pdf(wo, wi) and pdf(wi, wo), the frame transforms done once.
   struct PdfPair {
     float forward, backward;

@@ -18,11 +18,12 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
   const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
-  const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
+  const auto [bsdf_f, bsdf_pdf] = bsdf.eval_and_pdf(wo, ls.wi);
+  const Color f = bsdf_f * abs_dot(ls.wi, si.shading.n);
   if (f.is_black()) return {};
   if (scene.occluded(shadow_ray(si, ls))) return {};
   return f * emission_for(*light->emitter, ls.Li, wavelengths) *
-         (light->mis_weight(bsdf.pdf(wo, ls.wi), n_light, n_bsdf) / light->pdf);
+         (light->mis_weight(bsdf_pdf, n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

@@ -14,11 +14,12 @@ Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction&
   const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
-  const Color f = bsdf.eval(wo, ls.wi) * abs_dot(ls.wi, si.shading.n);
+  const auto [bsdf_f, bsdf_pdf] = bsdf.eval_and_pdf(wo, ls.wi);
+  const Color f = bsdf_f * abs_dot(ls.wi, si.shading.n);
   if (f.is_black()) return {};
   const Color tr = shadow_transmittance(scene, shadow_ray(si, ls), medium_after(si, arrived_in, ls.wi), sampler);
   if (tr.is_black()) return {};
-  return f * tr * ls.Li * (light->mis_weight(bsdf.pdf(wo, ls.wi), 1, n_bsdf) / light->pdf);
+  return f * tr * ls.Li * (light->mis_weight(bsdf_pdf, 1, n_bsdf) / light->pdf);
 }
 
 Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,
