@@ -14,7 +14,8 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
 }
 
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
-                          float u_select, Vec2 u_light, float n_light, float n_bsdf, const Wavelengths* wavelengths) {
+                          float u_select, Vec2 u_light, float n_light, float n_bsdf, const Wavelengths* wavelengths,
+                          const ScatterDensity* density) {
   const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
@@ -23,7 +24,7 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
   if (f.is_black()) return {};
   if (scene.occluded(shadow_ray(si, ls))) return {};
   return f * emission_for(*light->emitter, ls.Li, wavelengths) *
-         (light->mis_weight(bsdf_pdf, n_light, n_bsdf) / light->pdf);
+         (light->mis_weight(scatter_pdf(density, ls.wi, bsdf_pdf), n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

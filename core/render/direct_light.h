@@ -6,6 +6,7 @@
 #include "core/lights/emitter.h"
 #include "core/math/color.h"
 #include "core/render/mis.h"
+#include "core/render/scatter_density.h"
 #include "core/spectral/wavelengths.h"
 
 namespace caustica {
@@ -36,10 +37,11 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
 // samples). Returns the unoccluded contribution f * Li * |cos| * weight /
 // pdf, not yet multiplied by the path's throughput. With `wavelengths`
 // (spectral mode, the BSDF built for them) the emitter's radiance is
-// lifted to them too.
+// lifted to them too. With `density`, the walk samples directions by it
+// instead of the BSDF, and the weight is taken against it.
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                           float u_select, Vec2 u_light, float n_light = 1, float n_bsdf = 1,
-                          const Wavelengths* wavelengths = nullptr);
+                          const Wavelengths* wavelengths = nullptr, const ScatterDensity* density = nullptr);
 
 // The shadow ray from `si` toward the chosen light.
 inline Ray shadow_ray(const SurfaceInteraction& si, const LiSample& ls) {

@@ -1,15 +1,11 @@
 #include "core/render/pixel_integrator.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include <vector>
 
 #include "core/render/camera_sample.h"
 #include "core/render/pass_schedule.h"
+#include "core/render/pixel_loop.h"
 #include "core/render/renderer.h"
-#include "core/render/sample_scratch.h"
 #include "core/render/tiles.h"
 #include "core/scene/scene.h"
 
@@ -29,27 +25,21 @@ class PixelRun final : public IntegratorRun {
   uint32_t max_pass_samples() const override { return estimator_->max_pass_samples(); }
 
   bool run_pass(PassRange range, const PassTarget& target) override {
-    if (!estimator_->begin_pass(range.pass, target.stop)) return false;
-    tbb::enumerable_thread_specific<SampleScratch> scratch([&] { return SampleScratch(scene_, channels_); });
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles_.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-      SampleScratch& s = scratch.local();
-      for (size_t t = r.begin(); t != r.end(); ++t) {
-        const Tile& tile = tiles_[t];
-        for (int y = tile.lo.y; y < tile.hi.y; ++y)
-          for (int x = tile.lo.x; x < tile.hi.x; ++x)
-            for (uint64_t i = range.first; i < range.first + range.count; ++i) {
-              const CameraSample cs = sample_camera_ray(scene_, *s.sampler, {x, y}, i, seed_);
-              estimator_->sample(cs.ray, *s.sampler, s.values);
-              target.film.add_sample({{x, y}, i}, s.values, cs.weight);
-            }
-        if (target.progress) target.progress->pixel_samples += range.count * tile.pixels();
-      }
-    });
+    if (!estimator_->begin_pass(range, target.stop)) return false;
+    for_each_camera_sample(
+        scene_, seed_, tiles_, range.first, range.count, channels_, nullptr,
+        [&](Vec2i pixel, uint64_t i, const CameraSample& cs, SampleScratch& s) {
+          estimator_->sample(cs.ray, *s.sampler, s.values);
+          target.film.add_sample({pixel, i}, s.values, cs.weight);
+        },
+        [&](const Tile& tile) {
+          if (target.progress) target.progress->pixel_samples += range.count * tile.pixels();
+        });
     return true;
   }
 
   ReplayedSample replay(Vec2i pixel, uint64_t index) override {
-    estimator_->begin_pass(pass_containing(index, estimator_->max_pass_samples()).number, nullptr);
+    estimator_->begin_pass({pass_containing(index, estimator_->max_pass_samples()).number, index, 1}, nullptr);
     auto sampler = scene_.sensor().sampler()->clone();
     ReplayedSample out{std::vector<float>(channels_), {}};
     const CameraSample cs = sample_camera_ray(scene_, *sampler, pixel, index, seed_);

@@ -15,10 +15,10 @@ namespace caustica {
 class PixelEstimator {
  public:
   virtual ~PixelEstimator() = default;
-  // Before the pass numbered `pass` (core/render/pass_schedule.h), e.g. to
-  // trace that pass's round of photons; false if `stop` (may be null) ended
-  // that before the pass could run.
-  virtual bool begin_pass(uint32_t /*pass*/, const std::atomic<bool>* /*stop*/) { return true; }
+  // Before the samples of `range` (core/render/pass_schedule.h), e.g. to
+  // trace its pass's round of photons; false if `stop` (may be null) ended
+  // that before the samples could run.
+  virtual bool begin_pass(const PassRange& /*range*/, const std::atomic<bool>* /*stop*/) { return true; }
   virtual uint32_t max_pass_samples() const { return 16; }
   // Estimates the channels along one camera ray; every number it draws
   // comes from `sampler`, which is on the pixel's camera stream.

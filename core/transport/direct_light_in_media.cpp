@@ -10,7 +10,7 @@ namespace caustica {
 
 Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                                    const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light,
-                                   float n_bsdf) {
+                                   float n_bsdf, const ScatterDensity* density) {
   const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
@@ -19,7 +19,7 @@ Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction&
   if (f.is_black()) return {};
   const Color tr = shadow_transmittance(scene, shadow_ray(si, ls), medium_after(si, arrived_in, ls.wi), sampler);
   if (tr.is_black()) return {};
-  return f * tr * ls.Li * (light->mis_weight(bsdf_pdf, 1, n_bsdf) / light->pdf);
+  return f * tr * ls.Li * (light->mis_weight(scatter_pdf(density, ls.wi, bsdf_pdf), 1, n_bsdf) / light->pdf);
 }
 
 Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,

@@ -2,6 +2,7 @@
 
 #include "core/bsdf/surface_bsdf.h"
 #include "core/math/color.h"
+#include "core/render/scatter_density.h"
 #include "core/sampling/sampler.h"
 
 namespace caustica {
@@ -15,10 +16,11 @@ class Scene;
 
 // At a surface point reached through `arrived_in` (the medium on wo's side),
 // n_bsdf BSDF samples being taken for each light sample (0: none follows,
-// and the light sample takes all the weight).
+// and the light sample takes all the weight); with `density`, the walk
+// samples directions by it instead of the BSDF.
 Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                                    const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light,
-                                   float n_bsdf = 1);
+                                   float n_bsdf = 1, const ScatterDensity* density = nullptr);
 
 // At a scattering event at p inside `medium`, weighed against sampling its
 // phase function.

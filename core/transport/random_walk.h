@@ -13,7 +13,11 @@
 //   WalkAction at_vertex(const WalkVertex&)      the ray met a surface
 //   void escaped(const WalkEscape&)              the ray left the scene
 //   WalkAction scattered(const BsdfSample&)      the BSDF was sampled at the last vertex
-// and is called in that order along the path. Visitors that handle media
+// and is called in that order along the path. A visitor that samples
+// directions by something other than the BSDF (path guiding) provides
+//   std::optional<BsdfSample> sample_scattering(const WalkVertex&, float u_lobe, Vec2 u)
+// returning the direction, the BSDF's value there and the density it was
+// drawn with, from the numbers the BSDF would have been sampled with. Visitors that handle media
 // also provide
 //   WalkAction at_medium_vertex(const MediumVertex&)   the ray scattered in a medium
 //   WalkAction scattered_in_medium(const PhaseSample&) the phase function was sampled there
@@ -88,6 +92,11 @@ concept MediumVisitor = requires(Visitor& v, const MediumVertex& mv, const Phase
   { v.scattered_in_medium(ps) } -> std::same_as<WalkAction>;
 };
 
+template <class Visitor>
+concept ScatteringSampler = requires(Visitor& v, const WalkVertex& wv, float u_lobe, Vec2 u) {
+  { v.sample_scattering(wv, u_lobe, u) } -> std::same_as<std::optional<BsdfSample>>;
+};
+
 template <bool kMedia, class Visitor>
 void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
                    Sampler& sampler, Visitor& visitor, const Medium* medium, Wavelengths* wavelengths) {
@@ -146,11 +155,16 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       throughput = hero_only(throughput);
     }
     const Vec3 wo = -ray.d;
-    if (visitor.at_vertex(WalkVertex{*si, bsdf, wo, beta, segments, last, arrival, medium}) == WalkAction::Stop || last)
-      return;
+    const WalkVertex vertex{*si, bsdf, wo, beta, segments, last, arrival, medium};
+    if (visitor.at_vertex(vertex) == WalkAction::Stop || last) return;
 
     const float u_lobe = sampler.next_1d();
-    const auto bs = bsdf.sample(wo, u_lobe, sampler.next_2d());
+    const Vec2 u = sampler.next_2d();
+    std::optional<BsdfSample> bs;
+    if constexpr (ScatteringSampler<Visitor>)
+      bs = visitor.sample_scattering(vertex, u_lobe, u);
+    else
+      bs = bsdf.sample(wo, u_lobe, u);
     if (!bs) return;
     if (visitor.scattered(*bs) == WalkAction::Stop) return;
     const Color weight = bs->f * (abs_dot(bs->wi, si->shading.n) / bs->pdf);

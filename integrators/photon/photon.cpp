@@ -64,7 +64,7 @@ class CausticRounds final : public PixelEstimator {
 
   // Without photons there is nothing to refine between passes.
   uint32_t max_pass_samples() const override;
-  bool begin_pass(uint32_t pass, const std::atomic<bool>* stop) override;
+  bool begin_pass(const PassRange& range, const std::atomic<bool>* stop) override;
   void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override {
     if (!enabled_) return "(photon pass skipped)";
@@ -140,7 +140,8 @@ uint32_t CausticRounds::max_pass_samples() const { return enabled_ ? uint32_t(se
 
 // A pass's round is its number in the schedule, so a sample's photons do
 // not depend on where the render of its range began.
-bool CausticRounds::begin_pass(uint32_t pass, const std::atomic<bool>* stop) {
+bool CausticRounds::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {
+  const uint32_t pass = range.pass;
   if (!enabled_ || round_ == pass) return true;
   const uint64_t photons = uint64_t(settings_.photon_.photons);
   if (scene_.features().spectral) round_wavelengths_ = pass_wavelengths(pass, seed_);

@@ -1,0 +1,176 @@
+// guided_path: path tracing (as `path`) whose directions are drawn from a
+// distribution learnt from the scene while it renders, "practical path
+// guiding" (Müller, Gross, Novák 2017): a binary tree over space whose
+// regions each hold a quadtree over directions. Pass 0 (1 sample per pixel)
+// samples by the BSDF alone and records, at every vertex it could guide,
+// the radiance the rest of its path brought back; each training pass after
+// it (2, 4, 8, ... samples per pixel) samples by the distribution the pass
+// before recorded, and records for the next. Later passes all sample by
+// the last one.
+//
+// At a guided vertex a direction comes from the BSDF with probability
+// bsdf_fraction, from the learned distribution otherwise, and is weighed by
+// one-sample MIS (the balance heuristic: f over the mixture's density);
+// next-event estimation weighs its light sample against the same mixture.
+// Vertices with a delta lobe are not guided. Every pass's estimate is
+// unbiased, since the distribution it samples by is fixed before it starts
+// and the mixture has density wherever the BSDF has; so every sample of
+// every pass weighs the same in the image, whatever order the passes come
+// in, and training costs no samples.
+//
+// Records are summed in fixed point (FixedPointSum), and the trees are
+// rebuilt from them between passes in one thread, so the image is the same
+// for any thread count. A render of a range of samples, a replayed sample
+// and each MPI rank trace the training passes they do not render
+// themselves, for learning alone, and so sample by the same distributions
+// as one render of every sample.
+//
+//   <integrator type="guided_path"><integer name="training_passes" value="6"/></integrator>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/registry/properties.h"
+#include "core/render/pass_schedule.h"
+#include "core/render/path_settings.h"
+#include "core/render/pixel_integrator.h"
+#include "core/render/pixel_loop.h"
+#include "core/render/sample_wavelengths.h"
+#include "core/scene/scene.h"
+#include "integrators/path/guiding/guided_radiance.h"
+#include "integrators/path/guiding/guiding_settings.h"
+
+namespace caustica {
+namespace {
+
+class GuidedPathIntegrator;
+
+// One render's guiding trees and where their training stands.
+class GuidedEstimator final : public PixelEstimator {
+ public:
+  GuidedEstimator(const GuidedPathIntegrator& integrator, const Scene& scene, uint64_t seed);
+
+  uint32_t max_pass_samples() const override { return std::max(16u, 1u << (training_passes_ - 1)); }
+  bool begin_pass(const PassRange& range, const std::atomic<bool>* stop) override;
+  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
+  std::string summary() const override;
+
+ private:
+  // Traces pass `pass` over every pixel, recording only.
+  bool train_alone(uint32_t pass, const std::atomic<bool>* stop);
+
+  const Scene& scene_;
+  uint64_t seed_;
+  const PathSettings& path_;
+  const GuidingSettings& guiding_;
+  uint32_t training_passes_;  // 0 where guiding cannot help the scene
+  std::unique_ptr<GuidingTree> tree_;
+  GuidedWalk walk_;
+  uint32_t built_ = 0;          // the training passes the current distribution learnt from
+  int64_t recorded_pass_ = -1;  // the pass whose records the recorders hold, every pixel's
+  uint32_t passes_alone_ = 0;
+  int64_t capped_after_ = -1;  // the first pass after which the memory cap held refinement back
+};
+
+class GuidedPathIntegrator final : public PixelIntegrator {
+ public:
+  explicit GuidedPathIntegrator(const Properties& props)
+      : path_(read_path_settings(props)), guiding_(read_guiding_settings(props)) {}
+
+  std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t seed) const override {
+    return std::make_unique<GuidedEstimator>(*this, scene, seed);
+  }
+
+  bool renders_media() const override { return true; }
+  bool renders_spectral() const override { return true; }
+
+  std::string plan(const Scene& scene) const override {
+    const std::string pointless = guiding_pointless(scene, path_.max_depth);
+    if (!pointless.empty()) return plugin_name() + ": guiding skipped (" + pointless + "); renders as path";
+    const uint32_t spp = (1u << guiding_.training_passes) - 1;
+    return plugin_name() + ": path tracing with directions learnt over " + std::to_string(guiding_.training_passes) +
+           " training passes (" + std::to_string(spp) +
+           " samples per pixel, each counted in the image), mixed with BSDF sampling (bsdf_fraction " +
+           std::to_string(guiding_.bsdf_fraction) + ") by one-sample MIS; surfaces with delta lobes unguided" +
+           (scene.features().media ? "; media: scattering in a medium follows its phase function, unguided" : "") +
+           "; trees capped at " + std::to_string(guiding_.refinement.max_bytes >> 20) + " MiB";
+  }
+
+  std::string distributed_note() const override {
+    return "each rank traces the training passes itself, for learning alone, and renders its own share of the "
+           "samples by the same distributions";
+  }
+
+ private:
+  friend class GuidedEstimator;
+  PathSettings path_;
+  GuidingSettings guiding_;
+};
+
+GuidedEstimator::GuidedEstimator(const GuidedPathIntegrator& integrator, const Scene& scene, uint64_t seed)
+    : scene_(scene),
+      seed_(seed),
+      path_(integrator.path_),
+      guiding_(integrator.guiding_),
+      training_passes_(guiding_pointless(scene, integrator.path_.max_depth).empty()
+                           ? uint32_t(integrator.guiding_.training_passes)
+                           : 0),
+      tree_(std::make_unique<GuidingTree>(scene.bounds())) {
+  walk_.bsdf_fraction = guiding_.bsdf_fraction;
+}
+
+bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {
+  const uint32_t target = std::min(range.pass, training_passes_);
+  while (built_ < target) {
+    if (recorded_pass_ != int64_t(built_) && !train_alone(built_, stop)) return false;
+    tree_->refine(guiding_.refinement, uint64_t(1) << built_);
+    if (tree_->capped() && capped_after_ < 0) capped_after_ = built_;
+    ++built_;
+    recorded_pass_ = -1;
+  }
+  const Pass pass = pass_containing(range.first, max_pass_samples());
+  const bool whole_pass = range.first == pass.first && range.count == pass.count;
+  walk_.guide = built_ > 0;
+  walk_.record = range.pass < training_passes_ && whole_pass;
+  if (walk_.record) recorded_pass_ = range.pass;
+  return true;
+}
+
+bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) {
+  walk_.guide = built_ > 0;
+  walk_.record = true;
+  const Film& film = *scene_.sensor().film();
+  const uint64_t first = (uint64_t(1) << pass) - 1, count = uint64_t(1) << pass;
+  ++passes_alone_;
+  return for_each_camera_sample(
+      scene_, seed_, make_tiles(film.width(), film.height()), first, count, 3, stop,
+      [&](Vec2i, uint64_t, const CameraSample& cs, SampleScratch& s) { sample(cs.ray, *s.sampler, s.values); },
+      [](const Tile&) {});
+}
+
+void GuidedEstimator::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {
+  SampleWavelengths w(scene_, sampler);
+  const Color L = w.to_rgb(trace_guided_path(scene_, ray, sampler, path_, *tree_, walk_, w.get()));
+  out[0] = L.r;
+  out[1] = L.g;
+  out[2] = L.b;
+}
+
+std::string GuidedEstimator::summary() const {
+  if (training_passes_ == 0) return "guiding skipped";
+  char mib[32];
+  std::snprintf(mib, sizeof mib, "%.2f", double(tree_->bytes()) / double(1 << 20));
+  std::string s = "guiding: " + std::to_string(built_) + " of " + std::to_string(training_passes_) +
+                  " training passes learnt, " + std::to_string(tree_->regions()) + " regions, " +
+                  std::to_string(tree_->directional_nodes()) + " directional nodes, " + mib + " MiB";
+  if (capped_after_ >= 0)
+    s += ", max_tree_memory reached after pass " + std::to_string(capped_after_) + ": refinement stopped there";
+  if (passes_alone_ > 0) s += ", " + std::to_string(passes_alone_) + " passes traced for learning alone";
+  return s;
+}
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(GuidedPathIntegrator, "integrator", "guided_path", path_settings_params(guiding_params()), {});
+
+}  // namespace caustica

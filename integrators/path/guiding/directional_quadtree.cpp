@@ -1,0 +1,155 @@
+#include "integrators/path/guiding/directional_quadtree.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace caustica {
+
+namespace {
+
+constexpr double kBelowOne = 1 - 0x1p-53;
+
+// Which half of [0, 1) the coordinate u falls in when the lower half holds
+// `lower` of the energy, and u rescaled to cover [0, 1) within that half.
+int choose_half(double& u, double lower) {
+  if (u < lower) {
+    u = std::min(u / lower, kBelowOne);
+    return 0;
+  }
+  u = std::min((u - lower) / (1 - lower), kBelowOne);
+  return 1;
+}
+
+}  // namespace
+
+Vec2 direction_to_square(Vec3 w) {
+  const float z = std::clamp(w.z, -1.0f, 1.0f);
+  float phi = std::atan2(w.y, w.x) * (0.5f * kInvPi);
+  if (phi < 0) phi += 1;
+  return {std::min((z + 1) * 0.5f, std::nextafter(1.0f, 0.0f)), std::min(phi, std::nextafter(1.0f, 0.0f))};
+}
+
+Vec3 square_to_direction(Vec2 p) {
+  const float z = 2 * p.x - 1;
+  const float r = std::sqrt(std::max(0.0f, 1 - z * z));
+  const float phi = 2 * kPi * p.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+DirectionalDistribution::DirectionalDistribution(QuadtreeShape shape, std::vector<std::array<double, 4>> energy)
+    : shape_(std::move(shape)), energy_(std::move(energy)) {}
+
+double DirectionalDistribution::total() const {
+  const auto& e = energy_[0];
+  return e[0] + e[1] + e[2] + e[3];
+}
+
+DirectionalDistribution::Sample DirectionalDistribution::sample(Vec2 u_in) const {
+  double u = u_in.x, v = u_in.y;
+  if (empty()) return {u_in, 1};
+  double x0 = 0, y0 = 0, size = 1, pdf = 1;
+  for (uint32_t node = 0;;) {
+    const auto& e = energy_[node];
+    const double sum = e[0] + e[1] + e[2] + e[3];
+    const int qx = choose_half(u, (e[0] + e[2]) / sum);
+    const int qy = choose_half(v, e[qx] / (e[qx] + e[qx + 2]));
+    const int q = qx + 2 * qy;
+    pdf *= 4 * e[q] / sum;
+    size *= 0.5;
+    x0 += qx * size;
+    y0 += qy * size;
+    node = shape_.children[node][q];
+    if (node == 0) break;
+  }
+  // The leaf's corners are multiples of a power of two that floats hold
+  // exactly; rounding must not carry the point into the next quadrant.
+  const auto inside = [size](double lo, double t) {
+    return std::min(float(lo + t * size), std::nextafter(float(lo + size), 0.0f));
+  };
+  return {{inside(x0, u), inside(y0, v)}, float(pdf)};
+}
+
+float DirectionalDistribution::pdf(Vec2 p) const {
+  if (empty()) return 1;
+  double x = p.x, y = p.y, pdf = 1;
+  for (uint32_t node = 0;;) {
+    const auto& e = energy_[node];
+    const int qx = x >= 0.5 ? 1 : 0, qy = y >= 0.5 ? 1 : 0;
+    const int q = qx + 2 * qy;
+    pdf *= 4 * e[q] / (e[0] + e[1] + e[2] + e[3]);
+    if (!(pdf > 0)) return 0;
+    x = 2 * x - qx;
+    y = 2 * y - qy;
+    node = shape_.children[node][q];
+    if (node == 0) break;
+  }
+  return float(pdf);
+}
+
+size_t DirectionalDistribution::bytes() const {
+  return shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
+}
+
+DirectionalRecorder::DirectionalRecorder(QuadtreeShape shape) : shape_(std::move(shape)), sums_(shape_.nodes()) {}
+
+void DirectionalRecorder::record(Vec2 p, double energy) {
+  float x = p.x, y = p.y;
+  for (uint32_t node = 0;;) {
+    const int qx = x >= 0.5f ? 1 : 0, qy = y >= 0.5f ? 1 : 0;
+    const int q = qx + 2 * qy;
+    const uint32_t child = shape_.children[node][q];
+    if (child == 0) {
+      sums_[node][q].add(energy);
+      return;
+    }
+    x = 2 * x - float(qx);
+    y = 2 * y - float(qy);
+    node = child;
+  }
+}
+
+DirectionalDistribution DirectionalRecorder::distribution() const {
+  std::vector<std::array<double, 4>> energy(shape_.nodes());
+  // Children come after their parents, so a backward sweep sums them first.
+  for (size_t n = shape_.nodes(); n-- > 0;)
+    for (int q = 0; q < 4; ++q) {
+      const uint32_t child = shape_.children[n][q];
+      const auto& c = energy[child];
+      energy[n][q] = child == 0 ? sums_[n][q].value() : c[0] + c[1] + c[2] + c[3];
+    }
+  return {shape_, std::move(energy)};
+}
+
+size_t DirectionalRecorder::bytes_for(const QuadtreeShape& shape) {
+  return shape.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<FixedPointSum, 4>));
+}
+
+namespace {
+
+void refine(const DirectionalDistribution& d, const std::array<double, 4>& energy, uint32_t from, double total,
+            double threshold, int depth, int max_depth, QuadtreeShape& out, uint32_t into) {
+  for (int q = 0; q < 4; ++q) {
+    if (!(energy[q] > threshold * total) || depth >= max_depth) continue;
+    const uint32_t old_child = from == UINT32_MAX ? 0 : d.shape().children[from][q];
+    const uint32_t child = uint32_t(out.children.size());
+    out.children.push_back({0, 0, 0, 0});
+    out.children[into][q] = child;
+    if (old_child != 0) {
+      refine(d, d.energy(old_child), old_child, total, threshold, depth + 1, max_depth, out, child);
+    } else {
+      const double quarter = energy[q] / 4;
+      refine(d, {quarter, quarter, quarter, quarter}, UINT32_MAX, total, threshold, depth + 1, max_depth, out, child);
+    }
+  }
+}
+
+}  // namespace
+
+QuadtreeShape refined_shape(const DirectionalDistribution& d, double threshold, int max_depth) {
+  QuadtreeShape out;
+  if (d.empty()) return out;
+  refine(d, d.energy(0), 0, d.total(), threshold, 1, max_depth, out, 0);
+  return out;
+}
+
+}  // namespace caustica

@@ -1,0 +1,129 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <optional>
+
+#include "core/render/scatter_density.h"
+#include "integrators/path/guiding/spatial_tree.h"
+#include "integrators/path/path_radiance.h"
+
+namespace caustica {
+
+// What a guided walk does: sample directions from the learned
+// distributions (mixed with the BSDF's, BSDF taken with probability
+// bsdf_fraction) and record what the path finds for the next pass.
+struct GuidedWalk {
+  bool guide = false;
+  bool record = false;
+  float bsdf_fraction = 0.5f;
+};
+
+// Whether a vertex of these lobes is guided: not where any lobe is a delta
+// (its directions have no density for a learned distribution to add to).
+inline bool guidable(uint32_t lobes) { return (lobes & kDelta) == 0 && (lobes & (kDiffuse | kGlossy)) != 0; }
+
+// The density of the one-sample mixture: the BSDF with probability a, the
+// learned distribution (its density over the unit square, guide_square_pdf)
+// otherwise. With the balance heuristic, one-sample MIS weighs a sample of
+// either by its own share, w_i = c_i p_i / sum_j c_j p_j, so its estimate
+// w_i f / (c_i p_i) is f over this density whichever technique drew it.
+inline float mixture_pdf(float a, float bsdf_pdf, float guide_square_pdf) {
+  return a * bsdf_pdf + (1 - a) * guide_square_pdf * kSquareToSphere;
+}
+
+// The path tracer's walk (PathRadiance) with guided directions at guidable
+// vertices, recording at each of them the radiance the rest of the path
+// brings back along its sampled direction, over the density it was drawn
+// with: an estimate of the radiance's integral over each directional
+// quadrant, which the next pass samples in proportion to.
+template <bool kMedia>
+class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
+ public:
+  GuidedRadiance(const Scene& scene, Sampler& sampler, const PathSettings& settings, const Wavelengths* wavelengths,
+                 GuidingTree& tree, const GuidedWalk& walk)
+      : PathRadiance<kMedia>(scene, sampler, settings, nullptr, wavelengths), tree_(tree), walk_(walk) {}
+
+  WalkAction at_vertex(const WalkVertex& v) {
+    region_ = nullptr;
+    guide_ = nullptr;
+    if ((walk_.guide || walk_.record) && guidable(v.bsdf.lobes())) {
+      region_ = &tree_.region_at(v.si.p);
+      if (walk_.guide && !region_->sampling.empty()) guide_ = &region_->sampling;
+    }
+    this->density_ = guide_ ? this : nullptr;
+    return PathRadiance<kMedia>::at_vertex(v);
+  }
+
+  std::optional<BsdfSample> sample_scattering(const WalkVertex& v, float u_lobe, Vec2 u) {
+    auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
+    if (bs && region_ && walk_.record && pending_ < records_.size()) {
+      const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf);
+      records_[pending_++] = {region_, direction_to_square(bs->wi), bs->pdf, this->L, v.beta * weight};
+    }
+    return bs;
+  }
+
+  // Records what the finished path found beyond each recorded vertex.
+  void finish() {
+    for (size_t i = 0; i < pending_; ++i) {
+      const Record& r = records_[i];
+      const Color found = this->L - r.found_before;
+      double sum = 0;
+      int channels = 0;
+      for (int c = 0; c < 3; ++c)
+        if (r.beta_after[c] > 0) {
+          sum += std::max(0.0f, found[c]) / double(r.beta_after[c]);
+          ++channels;
+        }
+      r.region->record(r.direction, channels ? sum / channels / double(r.pdf) : 0);
+    }
+  }
+
+ private:
+  float pdf(Vec3 wi, float bsdf_pdf) const override {
+    return mixture_pdf(walk_.bsdf_fraction, bsdf_pdf, guide_->pdf(direction_to_square(wi)));
+  }
+
+  // u_lobe chooses the technique and, rescaled, the BSDF's lobe.
+  std::optional<BsdfSample> sample_mixture(const WalkVertex& v, float u_lobe, Vec2 u) const {
+    const float a = walk_.bsdf_fraction;
+    if (u_lobe < a) {
+      auto bs = v.bsdf.sample(v.wo, std::min(u_lobe / a, std::nextafter(1.0f, 0.0f)), u);
+      if (!bs || bs->is_delta()) return bs;
+      bs->pdf = pdf(bs->wi, bs->pdf);
+      return bs;
+    }
+    const Vec3 wi = square_to_direction(guide_->sample(u).p);
+    const auto [f, bsdf_pdf] = v.bsdf.eval_and_pdf(v.wo, wi);
+    const float p = pdf(wi, bsdf_pdf);
+    if (f.is_black() || !(p > 0)) return std::nullopt;
+    const bool same_side = dot(wi, v.si.ng) * dot(v.wo, v.si.ng) > 0;
+    const uint32_t lobes = v.bsdf.lobes() & (same_side ? kReflection : kTransmission);
+    // eta only steers roulette (core/transport/random_walk.h), which stays
+    // unbiased without it.
+    return BsdfSample{wi, f, p, lobes, 1};
+  }
+
+  struct Record {
+    GuidingRegion* region;
+    Vec2 direction;
+    float pdf;
+    Color found_before;
+    Color beta_after;
+  };
+  GuidingTree& tree_;
+  const GuidedWalk& walk_;
+  GuidingRegion* region_ = nullptr;
+  const DirectionalDistribution* guide_ = nullptr;
+  // Vertices past the 64th record nothing: the paths that reach them teach
+  // little, and a fixed array keeps the walk free of allocation.
+  std::array<Record, 64> records_;
+  size_t pending_ = 0;
+};
+
+// Radiance along `ray` by the guided walk; spectral as trace_path.
+Color trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
+                        const GuidedWalk& walk, Wavelengths* wavelengths);
+
+}  // namespace caustica

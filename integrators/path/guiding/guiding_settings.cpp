@@ -1,0 +1,54 @@
+#include "integrators/path/guiding/guiding_settings.h"
+
+#include "core/bsdf/bsdf.h"
+#include "core/registry/properties.h"
+#include "core/scene/scene.h"
+
+namespace caustica {
+
+GuidingSettings read_guiding_settings(const Properties& props) {
+  GuidingSettings s;
+  const int64_t passes = props.get_int("training_passes");
+  if (passes < 1 || passes > 20)
+    throw props.error("training_passes",
+                      "must be between 1 and 20 (pass 0 learns unguided; each later training pass of twice the "
+                      "samples learns from the one before)");
+  s.training_passes = int(passes);
+  s.bsdf_fraction = props.get_float("bsdf_fraction");
+  if (!(s.bsdf_fraction > 0 && s.bsdf_fraction <= 1))
+    throw props.error("bsdf_fraction",
+                      "must be in (0, 1]: with 0, directions the learned distribution gives no density would never "
+                      "be sampled, and the image would lose their light");
+  s.refinement.spatial_threshold = props.get_float("spatial_threshold");
+  if (!(s.refinement.spatial_threshold > 0)) throw props.error("spatial_threshold", "must be positive");
+  s.refinement.directional_threshold = props.get_float("directional_threshold");
+  if (!(s.refinement.directional_threshold > 0 && s.refinement.directional_threshold < 1))
+    throw props.error("directional_threshold", "must be in (0, 1)");
+  const int64_t mib = props.get_int("max_tree_memory");
+  if (mib < 1 || mib > (int64_t(1) << 20)) throw props.error("max_tree_memory", "must be between 1 and 1048576 (MiB)");
+  s.refinement.max_bytes = size_t(mib) << 20;
+  return s;
+}
+
+std::vector<ParamSpec> guiding_params() {
+  return {{"training_passes", ParamType::Integer, "6",
+           "passes of 1, 2, 4, ... samples per pixel that learn where light comes from (1 to 20); later passes "
+           "sample by the last distribution learnt"},
+          {"bsdf_fraction", ParamType::Float, "0.5",
+           "probability of sampling the BSDF rather than the learned distribution, in (0, 1]"},
+          {"spatial_threshold", ParamType::Float, "12000",
+           "records a region may hold, times sqrt(samples per pixel of the pass), before it is halved"},
+          {"directional_threshold", ParamType::Float, "0.01",
+           "share of a region's energy above which a directional quadrant is divided, in (0, 1)"},
+          {"max_tree_memory", ParamType::Integer, "256", "MiB the guiding trees may take; refinement stops there"}};
+}
+
+std::string guiding_pointless(const Scene& scene, int64_t max_depth) {
+  if ((scene.features().lobes & (kDiffuse | kGlossy)) == 0)
+    return "every surface scatters through delta lobes only (mirrors, smooth glass), which guiding leaves alone";
+  if (max_depth >= 0 && max_depth <= 2)
+    return "max_depth " + std::to_string(max_depth) + " leaves no light after a bounce";
+  return "";
+}
+
+}  // namespace caustica

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/registry/param_spec.h"
+#include "integrators/path/guiding/spatial_tree.h"
+
+namespace caustica {
+
+class Properties;
+class Scene;
+
+// guided_path's own parameters (beside path's):
+//   training_passes        passes of 1, 2, 4, ... samples per pixel that learn; every later
+//                          pass samples by what the last of them learnt
+//   bsdf_fraction          probability of sampling the BSDF instead of the learned distribution
+//   spatial_threshold      records a region holds, times sqrt(samples per pixel of the pass), before it is halved
+//   directional_threshold  share of a region's energy above which a directional quadrant is divided
+//   max_tree_memory        MiB the trees may take; refinement stops there
+struct GuidingSettings {
+  int training_passes = 6;
+  float bsdf_fraction = 0.5f;
+  GuidingRefinement refinement;
+};
+
+GuidingSettings read_guiding_settings(const Properties& props);
+std::vector<ParamSpec> guiding_params();
+
+// Why guiding cannot help this scene at the given path length limit, or
+// empty if it can: no vertex to guide (every surface a delta lobe), or no
+// light that arrives after a bounce (paths of two segments at most).
+std::string guiding_pointless(const Scene& scene, int64_t max_depth);
+
+}  // namespace caustica

@@ -1,0 +1,111 @@
+#include "integrators/path/guiding/spatial_tree.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace caustica {
+
+GuidingTree::GuidingTree(const Bounds3& b) : nodes_(1) {
+  regions_.emplace_back();
+  if (b.empty()) {
+    lo_ = {-1, -1, -1};
+    size_ = 2;
+    return;
+  }
+  const Vec3 extent = b.hi - b.lo;
+  // A little larger than the scene, so that points on its bounds fall inside.
+  size_ = std::max({extent.x, extent.y, extent.z, 1e-6f}) * 1.001f;
+  lo_ = b.center() - Vec3(size_ / 2, size_ / 2, size_ / 2);
+}
+
+GuidingRegion& GuidingTree::region_at(Vec3 p) {
+  const float below_one = std::nextafter(1.0f, 0.0f);
+  float t[3];
+  for (int a = 0; a < 3; ++a) t[a] = std::clamp((p[a] - lo_[a]) / size_, 0.0f, below_one);
+  uint32_t n = 0;
+  for (int depth = 0; nodes_[n].children[0] != 0; ++depth) {
+    float& x = t[depth % 3];
+    const int half = x >= 0.5f ? 1 : 0;
+    x = 2 * x - float(half);
+    n = nodes_[n].children[half];
+  }
+  return regions_[nodes_[n].region];
+}
+
+size_t GuidingTree::directional_nodes() const {
+  size_t n = 0;
+  for (const GuidingRegion& r : regions_) n += r.sampling.shape().nodes() + r.recording.shape().nodes();
+  return n;
+}
+
+size_t GuidingTree::bytes() const {
+  size_t b = nodes_.size() * sizeof(Node);
+  for (const GuidingRegion& r : regions_) b += sizeof(GuidingRegion) + r.sampling.bytes() + r.recording.bytes();
+  return b;
+}
+
+void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
+  struct Recorded {
+    DirectionalDistribution distribution;
+    uint64_t records;
+  };
+  std::vector<Recorded> recorded;
+  recorded.reserve(regions_.size());
+  for (const GuidingRegion& r : regions_) recorded.push_back({r.recording.distribution(), r.records.load()});
+
+  // A region's cost once its recorder takes the shape of its distribution.
+  const auto region_bytes = [](const DirectionalDistribution& d) {
+    return sizeof(GuidingRegion) + d.bytes() + DirectionalRecorder::bytes_for(d.shape());
+  };
+  size_t bytes = 0;
+  for (const Recorded& r : recorded) bytes += region_bytes(r.distribution);
+  bytes += nodes_.size() * sizeof(Node);
+
+  capped_ = false;
+  const double split_above = settings.spatial_threshold * std::sqrt(double(pass_spp));
+  std::vector<int> depth(nodes_.size(), 0);
+  for (size_t n = 1; n < nodes_.size(); ++n) depth[n] = -1;
+  // Parents come before their children, so one forward sweep sees every
+  // node's depth and halves new leaves again where they still hold too many.
+  for (size_t n = 0; n < nodes_.size(); ++n) {
+    for (uint32_t c : nodes_[n].children)
+      if (c != 0) depth[c] = depth[n] + 1;
+    if (nodes_[n].children[0] != 0) continue;
+    Recorded& r = recorded[nodes_[n].region];
+    if (!(double(r.records) > split_above) || depth[n] >= settings.max_spatial_depth) continue;
+    const size_t more = region_bytes(r.distribution) + 2 * sizeof(Node);
+    if (bytes + more > settings.max_bytes) {
+      capped_ = true;
+      continue;
+    }
+    bytes += more;
+    r.records /= 2;
+    const auto first = uint32_t(nodes_.size());
+    nodes_.push_back({{0, 0}, nodes_[n].region});
+    nodes_.push_back({{0, 0}, uint32_t(recorded.size())});
+    recorded.push_back(recorded[nodes_[n].region]);
+    nodes_[n].children = {first, first + 1};
+    depth.push_back(depth[n] + 1);
+    depth.push_back(depth[n] + 1);
+  }
+
+  regions_.clear();
+  for (Recorded& r : recorded) {
+    QuadtreeShape shape = refined_shape(r.distribution, settings.directional_threshold, settings.max_directional_depth);
+    // The region's bytes so far counted its recorder in the distribution's shape.
+    const size_t now = DirectionalRecorder::bytes_for(r.distribution.shape());
+    const size_t after = DirectionalRecorder::bytes_for(shape);
+    const size_t more = after > now ? after - now : 0;
+    if (bytes + more > settings.max_bytes) {
+      capped_ = true;
+      shape = r.distribution.shape();
+    } else {
+      bytes += more;
+    }
+    GuidingRegion& region = regions_.emplace_back();
+    region.recording = DirectionalRecorder(std::move(shape));
+    region.sampling = std::move(r.distribution);
+  }
+}
+
+}  // namespace caustica

@@ -1,0 +1,159 @@
+// guided_path as a render: the same image for any thread count, whatever
+// range or replay renders a sample; path's image where it learns nothing or
+// has not learnt yet; a closed emitting sphere's known radiance; the
+// one-sample MIS weights against their definition; its parameters' errors.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "core/render/renderer.h"
+#include "integrators/path/guiding/guided_radiance.h"
+#include "tests/support/independent_runs.h"
+#include "tests/support/test_scenes.h"
+#include "tests/support/z_test.h"
+
+namespace caustica {
+namespace {
+
+using testing::HasSubstr;
+
+const std::string kBox = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml";
+// Low enough that a small image's records divide space into many regions.
+const std::string kGuided = "guided_path:spatial_threshold=100";
+
+std::vector<float> render(const LoadedScene& scene, const std::string& integrator, uint32_t spp, int threads,
+                          uint64_t first = 0, uint64_t seed = 3) {
+  RenderSettings settings;
+  settings.integrator = integrator;
+  settings.spp = spp;
+  settings.first_sample = first;
+  settings.seed = seed;
+  settings.threads = threads;
+  settings.aovs = false;
+  return RenderJob(scene, settings).run().film.resolve();
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+TEST(GuidedPath, IsBitIdenticalForAnyThreadCount) {
+  const auto scene = load_scene(kBox, {{"res", "40"}});
+  const auto one = render(scene, kGuided, 24, 1);
+  EXPECT_TRUE(same_bits(one, render(scene, kGuided, 24, 2)));
+  EXPECT_TRUE(same_bits(one, render(scene, kGuided, 24, 3)));
+  EXPECT_FALSE(same_bits(one, render(scene, "path", 24, 2))) << "guiding changed nothing";
+}
+
+// A sample rendered alone (as the first of its range, or replayed) was
+// drawn by the distributions the passes before it learnt, traced there for
+// learning alone: with one sample per pixel the image holds its values.
+TEST(GuidedPath, ASampleIsTheSameRenderedAloneOrReplayed) {
+  const auto scene = load_scene(kBox, {{"res", "16"}, {"integrator", "guided_path"}});
+  const auto alone = render(scene, "", 1, 2, 9);
+  for (Vec2i p : {Vec2i{3, 4}, Vec2i{15, 0}, Vec2i{8, 12}}) {
+    const auto replayed = replay_sample(*scene, *scene.integrator, p, 9, 3).values;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(replayed[c], alone[(p.y * 16 + p.x) * 3 + c]) << p.x << ", " << p.y;
+  }
+}
+
+// Pass 0 samples by the BSDF alone; where nothing can be learnt (paths of
+// two segments) no pass guides: path's image, bit for bit.
+TEST(GuidedPath, IsPathWhereItHasNotLearnt) {
+  const auto scene = load_scene(kBox, {{"res", "24"}});
+  EXPECT_TRUE(same_bits(render(scene, kGuided, 1, 2), render(scene, "path", 1, 2)));
+  const auto direct = load_scene(kBox, {{"res", "24"}, {"max_depth", "2"}, {"integrator", "guided_path"}});
+  EXPECT_TRUE(same_bits(render(direct, "", 12, 2), render(direct, "path", 12, 2)));
+  EXPECT_THAT(direct.integrator->plan(*direct.scene), HasSubstr("guiding skipped (max_depth 2 leaves no light"));
+}
+
+// Inside a closed sphere emitting 1 and reflecting 0.5 every ray sees
+// 1 / (1 - 0.5) = 2, however the directions are drawn. Independent runs
+// give the error (a pass's samples share the distribution they learnt);
+// Student's t at 0.1%.
+TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
+  const std::string xml =
+      "<scene version='3.0.0'><integrator type='guided_path'><float name='spatial_threshold' value='50'/>"
+      "</integrator><sensor type='perspective'><float name='fov' value='70'/><sampler type='independent'/>"
+      "<transform name='to_world'><lookat origin='0.1, 0.2, 0' target='1, 0.3, 0.2'/></transform>"
+      "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/>"
+      "<rfilter type='box'/></film></sensor>"
+      "<shape type='sphere'><boolean name='flip_normals' value='true'/>"
+      "<bsdf type='diffuse'><rgb name='reflectance' value='0.5'/></bsdf>"
+      "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>";
+  const auto scene = test::scene_from_xml(xml);
+  constexpr int kRuns = 16;
+  const auto estimate = test::estimate_regions(scene, test::grid_regions(16, 16, 1), 16, kRuns, 40)[0];
+  const double t = (estimate.mean - 2) / estimate.standard_error;
+  EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kRuns - 1))
+      << estimate.mean << " +- " << estimate.standard_error;
+}
+
+// One-sample MIS with the balance heuristic: technique i (the BSDF with
+// probability a, the learned distribution otherwise) weighs its sample by
+// w_i = c_i p_i / (sum_j c_j p_j) and divides by c_i p_i; both come to f
+// over the mixture's density, and the weights sum to one.
+TEST(GuidedPath, OneSampleMisWeightsAreTheBalanceHeuristics) {
+  for (float a : {0.1f, 0.5f, 0.9f, 1.0f})
+    for (float p_bsdf : {0.0f, 0.05f, 0.3f, 7.0f})
+      for (float p_square : {0.0f, 0.5f, 3.0f, 40.0f}) {
+        const double p_guide = p_square / (4 * M_PI);
+        const double c_bsdf = a, c_guide = 1 - a;
+        const double sum = c_bsdf * p_bsdf + c_guide * p_guide;
+        if (!(sum > 0)) continue;
+        const double w_bsdf = c_bsdf * p_bsdf / sum, w_guide = c_guide * p_guide / sum;
+        EXPECT_NEAR(w_bsdf + w_guide, 1, 1e-12);
+        const float mixture = mixture_pdf(a, p_bsdf, p_square);
+        EXPECT_NEAR(mixture, sum, 1e-6 * sum);
+        if (p_bsdf > 0) {
+          EXPECT_NEAR(w_bsdf / (c_bsdf * p_bsdf), 1 / mixture, 1e-5 / mixture);
+        }
+        if (a < 1 && p_guide > 0) {
+          EXPECT_NEAR(w_guide / (c_guide * p_guide), 1 / mixture, 1e-5 / mixture);
+        }
+      }
+}
+
+TEST(GuidedPath, VerticesWithDeltaLobesAreNotGuided) {
+  EXPECT_TRUE(guidable(kDiffuseReflection));
+  EXPECT_TRUE(guidable(kGlossyReflection | kGlossyTransmission));
+  EXPECT_FALSE(guidable(kDeltaReflection | kDeltaTransmission));
+  EXPECT_FALSE(guidable(kDiffuseReflection | kDeltaReflection));  // a smooth coating over a diffuse base
+  EXPECT_FALSE(guidable(kNull));
+}
+
+std::string with_parameter(const std::string& declaration) {
+  return "<scene version='3.0.0'>\n<integrator type='guided_path'>\n" + declaration + "\n</integrator>\n</scene>";
+}
+
+TEST(GuidedPath, BadParametersNameThemselves) {
+  const struct {
+    std::string declaration, message;
+  } cases[] = {
+      {"<integer name='training_passes' value='0'/>",
+       "'training_passes' of integrator 'guided_path': must be between 1 and 20"},
+      {"<integer name='training_passes' value='-2'/>",
+       "'training_passes' of integrator 'guided_path': must be between 1 and 20"},
+      {"<integer name='training_passes' value='21'/>",
+       "'training_passes' of integrator 'guided_path': must be between 1 and 20"},
+      {"<float name='bsdf_fraction' value='0'/>",
+       "'bsdf_fraction' of integrator 'guided_path': must be in (0, 1]: with 0, directions"},
+      {"<float name='bsdf_fraction' value='1.5'/>", "'bsdf_fraction' of integrator 'guided_path': must be in (0, 1]"},
+      {"<float name='spatial_threshold' value='-1'/>",
+       "'spatial_threshold' of integrator 'guided_path': must be positive"},
+      {"<float name='directional_threshold' value='1'/>",
+       "'directional_threshold' of integrator 'guided_path': must be in (0, 1)"},
+      {"<integer name='max_tree_memory' value='0'/>",
+       "'max_tree_memory' of integrator 'guided_path': must be between 1 and 1048576 (MiB)"},
+  };
+  for (const auto& c : cases) {
+    const std::string error = test::load_error(with_parameter(c.declaration), "guided.xml");
+    EXPECT_THAT(error, HasSubstr("guided.xml:3")) << c.declaration;
+    EXPECT_THAT(error, HasSubstr(c.message)) << c.declaration;
+  }
+}
+
+}  // namespace
+}  // namespace caustica

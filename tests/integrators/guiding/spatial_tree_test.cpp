@@ -1,0 +1,92 @@
+// The guiding tree over space: regions found by position, halved where
+// their records exceed the threshold, both halves taking the records'
+// distribution, and the memory cap holding refinement back.
+
+#include "integrators/path/guiding/spatial_tree.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace caustica {
+namespace {
+
+Bounds3 unit_box() {
+  Bounds3 b;
+  b.expand(Vec3{0, 0, 0});
+  b.expand(Vec3{1, 1, 1});
+  return b;
+}
+
+// `n` records in the region at p, all toward the square's point (0.1, 0.1).
+void record(GuidingTree& tree, Vec3 p, int n) {
+  for (int i = 0; i < n; ++i) tree.region_at(p).record({0.1f, 0.1f}, 1);
+}
+
+TEST(GuidingTree, HalvesRegionsHoldingManyRecordsAlongXFirst) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 100;
+  record(tree, {0.2f, 0.5f, 0.5f}, 150);  // above 100 * sqrt(1): halved once
+  tree.refine(settings, 1);
+  ASSERT_EQ(tree.regions(), 2u);
+  GuidingRegion& left = tree.region_at({0.2f, 0.5f, 0.5f});
+  GuidingRegion& right = tree.region_at({0.8f, 0.5f, 0.5f});
+  EXPECT_NE(&left, &right);
+  // Both halves sample by the records: all toward (0.1, 0.1).
+  EXPECT_GT(left.sampling.pdf({0.1f, 0.1f}), 1);
+  EXPECT_GT(right.sampling.pdf({0.1f, 0.1f}), 1);
+  EXPECT_EQ(left.sampling.pdf({0.9f, 0.9f}), 0);
+  // The halves meet at x = 0.5 of the cube around the box; y does not divide them.
+  EXPECT_EQ(&tree.region_at({0.2f, 0.1f, 0.9f}), &left);
+
+  // At 4 samples per pixel the threshold is 100 * sqrt(4) = 200: 600
+  // records halve to 300 and again to 150, four regions where there was
+  // one; the right half, holding none, stays whole.
+  record(tree, {0.2f, 0.5f, 0.5f}, 600);
+  tree.refine(settings, 4);
+  EXPECT_EQ(tree.regions(), 5u);
+  EXPECT_FALSE(tree.capped());
+}
+
+TEST(GuidingTree, RegionsWithFewRecordsStayWhole) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 100;
+  record(tree, {0.5f, 0.5f, 0.5f}, 100);  // not above 100
+  tree.refine(settings, 1);
+  EXPECT_EQ(tree.regions(), 1u);
+  // Records are counted afresh each pass.
+  record(tree, {0.5f, 0.5f, 0.5f}, 100);
+  tree.refine(settings, 1);
+  EXPECT_EQ(tree.regions(), 1u);
+}
+
+TEST(GuidingTree, PointsOutsideTheBoundsFallInTheNearestRegion) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 1;
+  record(tree, {0.5f, 0.5f, 0.5f}, 10);
+  tree.refine(settings, 1);
+  EXPECT_EQ(&tree.region_at({-5, 0.5f, 0.5f}), &tree.region_at({0.01f, 0.5f, 0.5f}));
+  EXPECT_EQ(&tree.region_at({7, 7, 7}), &tree.region_at({0.99f, 0.99f, 0.99f}));
+  EXPECT_EQ(&tree.region_at({NAN, 0.5f, 0.5f}), &tree.region_at({0.01f, 0.5f, 0.5f}));
+}
+
+TEST(GuidingTree, TheMemoryCapStopsRefinementAndSaysSo) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 1;
+  settings.max_bytes = tree.bytes() + 100;  // room for no second region
+  record(tree, {0.5f, 0.5f, 0.5f}, 1000);
+  tree.refine(settings, 1);
+  EXPECT_EQ(tree.regions(), 1u);
+  EXPECT_TRUE(tree.capped());
+  EXPECT_LE(tree.bytes(), settings.max_bytes + 1000);
+  settings.max_bytes = size_t(64) << 20;
+  tree.refine(settings, 1);
+  EXPECT_FALSE(tree.capped());
+}
+
+}  // namespace
+}  // namespace caustica
