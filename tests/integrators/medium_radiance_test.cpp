@@ -189,9 +189,10 @@ TEST(MediumRadiance, IntegratorsWithoutMediaRefuseTheScene) {
     test::render_scene(scene, 1);
     FAIL() << "direct rendered a scene with media";
   } catch (const std::invalid_argument& e) {
-    EXPECT_THAT(e.what(),
-                HasSubstr("integrator 'direct' does not render participating media or null surfaces yet, "
-                          "which fog.xml has; render it with aov, bdpt, path, photon, ptracer, sppm, volpath"));
+    EXPECT_THAT(
+        e.what(),
+        HasSubstr("integrator 'direct' does not render participating media or null surfaces yet, "
+                  "which fog.xml has; render it with aov, bdpt, guided_path, path, photon, ptracer, sppm, volpath"));
   }
 }
 

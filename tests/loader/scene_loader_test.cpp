@@ -368,7 +368,9 @@ TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
     make_integrator("bdpt2");
     FAIL();
   } catch (const std::exception& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown integrator 'bdpt2' (available: aov, bdpt, direct, path, photon, ptracer"));
+    EXPECT_THAT(
+        e.what(),
+        HasSubstr("unknown integrator 'bdpt2' (available: aov, bdpt, direct, guided_path, path, photon, ptracer"));
   }
 }
 

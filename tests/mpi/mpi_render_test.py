@@ -79,7 +79,7 @@ class MpiRender(unittest.TestCase):
                                 f"{what}: channel {name} differs")
 
     def test_any_number_of_ranks_renders_the_single_process_image(self):
-        for integrator in ["path", "bdpt", "ptracer"]:
+        for integrator in ["path", "bdpt", "ptracer", "guided_path"]:
             args = ["render", GLASS, "-D", "res=16", "--spp", "23", "--seed", "5", "--integrator", integrator,
                     "--raw-sums", "-q"]
             single, _ = self.render([BINARY] + args, f"{integrator}.exr")

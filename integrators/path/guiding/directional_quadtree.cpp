@@ -87,10 +87,11 @@ float DirectionalDistribution::pdf(Vec2 p) const {
 }
 
 size_t DirectionalDistribution::bytes() const {
-  return shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
+  return sizeof(DirectionalDistribution) + shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
 }
 
-DirectionalRecorder::DirectionalRecorder(QuadtreeShape shape) : shape_(std::move(shape)), sums_(shape_.nodes()) {}
+DirectionalRecorder::DirectionalRecorder(QuadtreeShape shape)
+    : shape_(std::move(shape)), sums_(new std::array<FixedPointSum, 4>[shape_.nodes()]()) {}
 
 void DirectionalRecorder::record(Vec2 p, double energy) {
   float x = p.x, y = p.y;
@@ -121,7 +122,8 @@ DirectionalDistribution DirectionalRecorder::distribution() const {
 }
 
 size_t DirectionalRecorder::bytes_for(const QuadtreeShape& shape) {
-  return shape.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<FixedPointSum, 4>));
+  return sizeof(DirectionalRecorder) +
+         shape.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<FixedPointSum, 4>));
 }
 
 namespace {

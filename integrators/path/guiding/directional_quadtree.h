@@ -2,7 +2,7 @@
 
 #include <array>
 #include <cstdint>
-#include <deque>
+#include <memory>
 #include <vector>
 
 #include "core/math/constants.h"
@@ -70,7 +70,7 @@ class DirectionalRecorder {
 
  private:
   QuadtreeShape shape_;
-  std::deque<std::array<FixedPointSum, 4>> sums_;  // atomics do not move, and a deque never moves them
+  std::unique_ptr<std::array<FixedPointSum, 4>[]> sums_;  // per node, as many as the shape has
 };
 
 // The shape for the next pass's records: a quadrant holding more than

@@ -49,7 +49,9 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     guide_ = nullptr;
     if ((walk_.guide || walk_.record) && guidable(v.bsdf.lobes())) {
       region_ = &tree_.region_at(v.si.p);
-      if (walk_.guide && !region_->sampling.empty()) guide_ = &region_->sampling;
+      bucket_ = normal_bucket(dot(v.si.ng, v.wo) < 0 ? -v.si.ng : v.si.ng);
+      const DirectionalDistribution& d = region_->guides[bucket_].sampling;
+      if (walk_.guide && !d.empty()) guide_ = &d;
     }
     this->density_ = guide_ ? this : nullptr;
     return PathRadiance<kMedia>::at_vertex(v);
@@ -59,7 +61,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
     if (bs && region_ && walk_.record && pending_ < records_.size()) {
       const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf);
-      records_[pending_++] = {region_, direction_to_square(bs->wi), bs->pdf, this->L, v.beta * weight};
+      records_[pending_++] = {region_, bucket_, direction_to_square(bs->wi), bs->pdf, this->L, v.beta * weight};
     }
     return bs;
   }
@@ -76,7 +78,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
           sum += std::max(0.0f, found[c]) / double(r.beta_after[c]);
           ++channels;
         }
-      r.region->record(r.direction, channels ? sum / channels / double(r.pdf) : 0);
+      r.region->record(r.bucket, r.direction, channels ? sum / channels / double(r.pdf) : 0);
     }
   }
 
@@ -107,6 +109,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
 
   struct Record {
     GuidingRegion* region;
+    int bucket;
     Vec2 direction;
     float pdf;
     Color found_before;
@@ -115,6 +118,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   GuidingTree& tree_;
   const GuidedWalk& walk_;
   GuidingRegion* region_ = nullptr;
+  int bucket_ = 0;
   const DirectionalDistribution* guide_ = nullptr;
   // Vertices past the 64th record nothing: the paths that reach them teach
   // little, and a fixed array keeps the walk free of allocation.

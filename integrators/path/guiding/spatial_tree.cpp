@@ -5,6 +5,12 @@
 
 namespace caustica {
 
+int normal_bucket(Vec3 n) {
+  const Vec3 a{std::abs(n.x), std::abs(n.y), std::abs(n.z)};
+  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  return 2 * axis + (n[axis] < 0 ? 1 : 0);
+}
+
 GuidingTree::GuidingTree(const Bounds3& b) : nodes_(1) {
   regions_.emplace_back();
   if (b.empty()) {
@@ -34,31 +40,42 @@ GuidingRegion& GuidingTree::region_at(Vec3 p) {
 
 size_t GuidingTree::directional_nodes() const {
   size_t n = 0;
-  for (const GuidingRegion& r : regions_) n += r.sampling.shape().nodes() + r.recording.shape().nodes();
+  for (const GuidingRegion& r : regions_)
+    for (const DirectionalGuide& g : r.guides) n += g.sampling.shape().nodes() + g.recording.shape().nodes();
   return n;
 }
 
 size_t GuidingTree::bytes() const {
   size_t b = nodes_.size() * sizeof(Node);
-  for (const GuidingRegion& r : regions_) b += sizeof(GuidingRegion) + r.sampling.bytes() + r.recording.bytes();
+  for (const GuidingRegion& r : regions_) {
+    b += sizeof(GuidingRegion);
+    for (const DirectionalGuide& g : r.guides) b += g.sampling.bytes() + g.recording.bytes() - sizeof g;
+  }
   return b;
 }
 
 void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
   struct Recorded {
-    DirectionalDistribution distribution;
+    std::array<DirectionalDistribution, kNormalBuckets> distributions;
     uint64_t records;
   };
   std::vector<Recorded> recorded;
   recorded.reserve(regions_.size());
-  for (const GuidingRegion& r : regions_) recorded.push_back({r.recording.distribution(), r.records.load()});
+  for (const GuidingRegion& r : regions_) {
+    Recorded& out = recorded.emplace_back();
+    for (int b = 0; b < kNormalBuckets; ++b) out.distributions[b] = r.guides[b].recording.distribution();
+    out.records = r.records.load();
+  }
 
-  // A region's cost once its recorder takes the shape of its distribution.
-  const auto region_bytes = [](const DirectionalDistribution& d) {
-    return sizeof(GuidingRegion) + d.bytes() + DirectionalRecorder::bytes_for(d.shape());
+  // A region's cost once its recorders take the shapes of its distributions.
+  const auto region_bytes = [](const Recorded& r) {
+    size_t b = sizeof(GuidingRegion);
+    for (const DirectionalDistribution& d : r.distributions)
+      b += d.bytes() + DirectionalRecorder::bytes_for(d.shape()) - sizeof(DirectionalGuide);
+    return b;
   };
   size_t bytes = 0;
-  for (const Recorded& r : recorded) bytes += region_bytes(r.distribution);
+  for (const Recorded& r : recorded) bytes += region_bytes(r);
   bytes += nodes_.size() * sizeof(Node);
 
   capped_ = false;
@@ -73,7 +90,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
     if (nodes_[n].children[0] != 0) continue;
     Recorded& r = recorded[nodes_[n].region];
     if (!(double(r.records) > split_above) || depth[n] >= settings.max_spatial_depth) continue;
-    const size_t more = region_bytes(r.distribution) + 2 * sizeof(Node);
+    const size_t more = region_bytes(r) + 2 * sizeof(Node);
     if (bytes + more > settings.max_bytes) {
       capped_ = true;
       continue;
@@ -91,20 +108,23 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
 
   regions_.clear();
   for (Recorded& r : recorded) {
-    QuadtreeShape shape = refined_shape(r.distribution, settings.directional_threshold, settings.max_directional_depth);
-    // The region's bytes so far counted its recorder in the distribution's shape.
-    const size_t now = DirectionalRecorder::bytes_for(r.distribution.shape());
-    const size_t after = DirectionalRecorder::bytes_for(shape);
-    const size_t more = after > now ? after - now : 0;
-    if (bytes + more > settings.max_bytes) {
-      capped_ = true;
-      shape = r.distribution.shape();
-    } else {
-      bytes += more;
-    }
     GuidingRegion& region = regions_.emplace_back();
-    region.recording = DirectionalRecorder(std::move(shape));
-    region.sampling = std::move(r.distribution);
+    for (int b = 0; b < kNormalBuckets; ++b) {
+      DirectionalDistribution& d = r.distributions[b];
+      QuadtreeShape shape = refined_shape(d, settings.directional_threshold, settings.max_directional_depth);
+      // The bytes so far counted the recorder in the distribution's shape.
+      const size_t now = DirectionalRecorder::bytes_for(d.shape());
+      const size_t after = DirectionalRecorder::bytes_for(shape);
+      const size_t more = after > now ? after - now : 0;
+      if (bytes + more > settings.max_bytes) {
+        capped_ = true;
+        shape = d.shape();
+      } else {
+        bytes += more;
+      }
+      region.guides[b].recording = DirectionalRecorder(std::move(shape));
+      region.guides[b].sampling = std::move(d);
+    }
   }
 }
 

@@ -26,15 +26,27 @@ struct GuidingRefinement {
   size_t max_bytes = size_t(256) << 20;
 };
 
-// A region of space with the directional distribution its paths sample by
-// in this pass and the recorder of what they find for the next one.
-struct GuidingRegion {
+// The directional distribution a region's paths sample by in this pass and
+// the recorder of what they find for the next one.
+struct DirectionalGuide {
   DirectionalDistribution sampling;
   DirectionalRecorder recording;
+};
+
+// Surfaces facing apart see light from apart: a region keeps one guide for
+// the points whose normal (turned toward the path's side) lies nearest
+// each of +x, -x, +y, -y, +z and -z, so that a floor and the wall beside it
+// in one region do not send each other's paths into their own backs.
+inline constexpr int kNormalBuckets = 6;
+int normal_bucket(Vec3 n);
+
+// A region of space, its guides and how many records it took this pass.
+struct GuidingRegion {
+  std::array<DirectionalGuide, kNormalBuckets> guides;
   std::atomic<uint64_t> records{0};
 
-  void record(Vec2 direction, double energy) {
-    recording.record(direction, energy);
+  void record(int bucket, Vec2 direction, double energy) {
+    guides[bucket].recording.record(direction, energy);
     records.fetch_add(1, std::memory_order_relaxed);
   }
 };

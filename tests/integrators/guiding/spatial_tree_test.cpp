@@ -20,7 +20,7 @@ Bounds3 unit_box() {
 
 // `n` records in the region at p, all toward the square's point (0.1, 0.1).
 void record(GuidingTree& tree, Vec3 p, int n) {
-  for (int i = 0; i < n; ++i) tree.region_at(p).record({0.1f, 0.1f}, 1);
+  for (int i = 0; i < n; ++i) tree.region_at(p).record(0, {0.1f, 0.1f}, 1);
 }
 
 TEST(GuidingTree, HalvesRegionsHoldingManyRecordsAlongXFirst) {
@@ -34,9 +34,9 @@ TEST(GuidingTree, HalvesRegionsHoldingManyRecordsAlongXFirst) {
   GuidingRegion& right = tree.region_at({0.8f, 0.5f, 0.5f});
   EXPECT_NE(&left, &right);
   // Both halves sample by the records: all toward (0.1, 0.1).
-  EXPECT_GT(left.sampling.pdf({0.1f, 0.1f}), 1);
-  EXPECT_GT(right.sampling.pdf({0.1f, 0.1f}), 1);
-  EXPECT_EQ(left.sampling.pdf({0.9f, 0.9f}), 0);
+  EXPECT_GT(left.guides[0].sampling.pdf({0.1f, 0.1f}), 1);
+  EXPECT_GT(right.guides[0].sampling.pdf({0.1f, 0.1f}), 1);
+  EXPECT_EQ(left.guides[0].sampling.pdf({0.9f, 0.9f}), 0);
   // The halves meet at x = 0.5 of the cube around the box; y does not divide them.
   EXPECT_EQ(&tree.region_at({0.2f, 0.1f, 0.9f}), &left);
 
