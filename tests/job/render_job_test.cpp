@@ -110,7 +110,8 @@ double moments_difference(const Image& a, const Image& b, bool* identical) {
 // than the render's own passes; the ranges split passes.
 TEST(RenderJob, DisjointSampleRangesMergeIntoTheRenderOfTheirUnion) {
   for (const char* sampler : {"independent", "ldsampler", "stratified", "multijitter", "halton"})
-    for (const char* integrator : {"path", "photon:photons=3000", "bdpt", "ptracer", "guided_path"}) {
+    for (const char* integrator :
+         {"path", "photon:photons=3000", "bdpt", "ptracer", "guided_path:spatial_threshold=100"}) {
       const auto scene = load_scene(kGlass, {{"res", "24"}, {"sampler", sampler}});
       const RenderFile whole = render_range(scene, integrator, 0, 21);
       const RenderFile merged =
