@@ -87,7 +87,8 @@ float DirectionalDistribution::pdf(Vec2 p) const {
 }
 
 size_t DirectionalDistribution::bytes() const {
-  return sizeof(DirectionalDistribution) + shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
+  return sizeof(DirectionalDistribution) +
+         shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
 }
 
 DirectionalRecorder::DirectionalRecorder(QuadtreeShape shape)
