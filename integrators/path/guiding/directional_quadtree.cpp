@@ -110,6 +110,35 @@ void DirectionalRecorder::record(Vec2 p, double energy) {
   }
 }
 
+void DirectionalRecorder::record_spread(Vec2 p, double energy) {
+  double size = 1, x = p.x, y = p.y;
+  for (uint32_t node = 0;;) {
+    const int qx = x >= 0.5 ? 1 : 0, qy = y >= 0.5 ? 1 : 0;
+    size /= 2;
+    node = shape_.children[node][qx + 2 * qy];
+    if (node == 0) break;
+    x = 2 * x - qx;
+    y = 2 * y - qy;
+  }
+  const double box[4] = {p.x - size / 2, p.y - size / 2, p.x + size / 2, p.y + size / 2};
+  splat(0, 0, 0, 1, box, energy / (size * size));
+}
+
+void DirectionalRecorder::splat(uint32_t node, double x0, double y0, double size, const double box[4], double density) {
+  const double half = size / 2;
+  for (int q = 0; q < 4; ++q) {
+    const double qx0 = x0 + (q & 1) * half, qy0 = y0 + (q >> 1) * half;
+    const double w = std::min(box[2], qx0 + half) - std::max(box[0], qx0);
+    const double h = std::min(box[3], qy0 + half) - std::max(box[1], qy0);
+    if (!(w > 0 && h > 0)) continue;
+    const uint32_t child = shape_.children[node][q];
+    if (child == 0)
+      sums_[node][q].add(density * w * h);
+    else
+      splat(child, qx0, qy0, half, box, density);
+  }
+}
+
 DirectionalDistribution DirectionalRecorder::distribution() const {
   std::vector<std::array<double, 4>> energy(shape_.nodes());
   // Children come after their parents, so a backward sweep sums them first.

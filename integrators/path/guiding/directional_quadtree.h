@@ -62,6 +62,11 @@ class DirectionalRecorder {
  public:
   explicit DirectionalRecorder(QuadtreeShape shape = {});
   void record(Vec2 p, double energy);
+  // The same energy spread evenly over a square the size of the leaf
+  // quadrant holding p, centred on p (the part outside the unit square is
+  // dropped), each quadrant it overlaps taking its share: a record then
+  // teaches its neighbourhood, not one quadrant alone.
+  void record_spread(Vec2 p, double energy);
   // The energies recorded, summed up the tree.
   DirectionalDistribution distribution() const;
   const QuadtreeShape& shape() const { return shape_; }
@@ -69,6 +74,8 @@ class DirectionalRecorder {
   static size_t bytes_for(const QuadtreeShape& shape);
 
  private:
+  void splat(uint32_t node, double x0, double y0, double size, const double box[4], double density);
+
   QuadtreeShape shape_;
   std::unique_ptr<std::array<FixedPointSum, 4>[]> sums_;  // per node, as many as the shape has
 };

@@ -46,7 +46,7 @@ struct GuidingRegion {
   std::atomic<uint64_t> records{0};
 
   void record(int bucket, Vec2 direction, double energy) {
-    guides[bucket].recording.record(direction, energy);
+    guides[bucket].recording.record_spread(direction, energy);
     records.fetch_add(1, std::memory_order_relaxed);
   }
 };

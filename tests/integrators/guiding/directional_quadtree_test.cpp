@@ -149,6 +149,34 @@ TEST(DirectionalRecorder, SumsWhatFallsInEachQuadrantInAnyOrder) {
   }
 }
 
+// A spread record covers a square the size of its leaf quadrant: here the
+// root's quadrants (1/2 wide), so a record at (0.5, 0.3) puts half its
+// energy on each side of x = 0.5, all below y = 0.5 but for the part of
+// the square above it (0.3 + 0.25 - 0.5 = 0.05 of 0.5); one at the corner
+// keeps only the quarter of its square inside the unit square.
+TEST(DirectionalRecorder, SpreadsARecordOverItsQuadrantsNeighbourhood) {
+  DirectionalRecorder recorder;
+  recorder.record_spread({0.5f, 0.3f}, 1);
+  const DirectionalDistribution d = recorder.distribution();
+  EXPECT_NEAR(d.energy(0)[0], 0.5 * 0.9, 1e-6);
+  EXPECT_NEAR(d.energy(0)[1], 0.5 * 0.9, 1e-6);
+  EXPECT_NEAR(d.energy(0)[2], 0.5 * 0.1, 1e-6);
+  EXPECT_NEAR(d.energy(0)[3], 0.5 * 0.1, 1e-6);
+  DirectionalRecorder corner;
+  corner.record_spread({0.0f, 0.0f}, 1);
+  EXPECT_NEAR(corner.distribution().total(), 0.25, 1e-9);
+  // Deeper quadrants spread less: a divided quadrant's record stays in it
+  // when its square (1/4 wide) does not reach the edge.
+  QuadtreeShape shape;
+  shape.children[0][0] = 1;
+  shape.children.push_back({0, 0, 0, 0});
+  DirectionalRecorder deep(shape);
+  deep.record_spread({0.125f, 0.125f}, 2);
+  const DirectionalDistribution e = deep.distribution();
+  EXPECT_NEAR(e.energy(1)[0], 2, 1e-9);
+  EXPECT_EQ(e.energy(0)[1] + e.energy(0)[2] + e.energy(0)[3], 0);
+}
+
 TEST(RefinedShape, DividesQuadrantsAboveTheThresholdDownToTheDepthLimit) {
   QuadtreeShape root;
   // All energy in quadrant 0, and within it all in its quadrant 3.
