@@ -60,8 +60,15 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   std::optional<BsdfSample> sample_scattering(const WalkVertex& v, float u_lobe, Vec2 u) {
     auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
     if (bs && region_ && walk_.record && pending_ < records_.size()) {
-      const Color weight = bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf);
-      records_[pending_++] = {region_, bucket_, direction_to_square(bs->wi), bs->pdf, this->L, v.beta * weight};
+      const Color beta_after = v.beta * (bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf));
+      const Vec2 d = direction_to_square(bs->wi);
+      records_[pending_++] = {region_,
+                              bucket_,
+                              d.x,
+                              d.y,
+                              bs->pdf,
+                              {this->L.r, this->L.g, this->L.b},
+                              {beta_after.r, beta_after.g, beta_after.b}};
     }
     return bs;
   }
@@ -70,15 +77,14 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   void finish() {
     for (size_t i = 0; i < pending_; ++i) {
       const Record& r = records_[i];
-      const Color found = this->L - r.found_before;
       double sum = 0;
       int channels = 0;
       for (int c = 0; c < 3; ++c)
         if (r.beta_after[c] > 0) {
-          sum += std::max(0.0f, found[c]) / double(r.beta_after[c]);
+          sum += std::max(0.0f, this->L[c] - r.found_before[c]) / double(r.beta_after[c]);
           ++channels;
         }
-      r.region->record(r.bucket, r.direction, channels ? sum / channels / double(r.pdf) : 0);
+      r.region->record(r.bucket, {r.x, r.y}, channels ? sum / channels / double(r.pdf) : 0);
     }
   }
 
@@ -92,10 +98,13 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     const float a = walk_.bsdf_fraction;
     if (u_lobe < a) {
       auto bs = v.bsdf.sample(v.wo, std::min(u_lobe / a, std::nextafter(1.0f, 0.0f)), u);
-      if (!bs || bs->is_delta()) return bs;
-      bs->pdf = pdf(bs->wi, bs->pdf);
+      if (bs) bs->pdf = pdf(bs->wi, bs->pdf);
       return bs;
     }
+    // The guide's density is read back at wi rather than taken from its
+    // sample, so that a sample and a light sample in the same direction
+    // meet the same mixture (the map's rounding can move wi across a
+    // quadrant's edge).
     const Vec3 wi = square_to_direction(guide_->sample(u).p);
     const auto [f, bsdf_pdf] = v.bsdf.eval_and_pdf(v.wo, wi);
     const float p = pdf(wi, bsdf_pdf);
@@ -107,13 +116,15 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     return BsdfSample{wi, f, p, lobes, 1};
   }
 
+  // Plain floats, so that the array below is left uninitialised rather
+  // than zeroed for every path, recording or not.
   struct Record {
     GuidingRegion* region;
     int bucket;
-    Vec2 direction;
+    float x, y;  // the direction on the unit square
     float pdf;
-    Color found_before;
-    Color beta_after;
+    float found_before[3];  // the path's radiance when it left the vertex
+    float beta_after[3];    // its weight after the vertex's scattering
   };
   GuidingTree& tree_;
   const GuidedWalk& walk_;
