@@ -78,6 +78,11 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
 }
 
 DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next) {
+  return scatter_densities(prev, cur, next, next.chain_cos_fwd);
+}
+
+DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next,
+                              float next_chain_cos) {
   if (!cur.is_surface() && !cur.in_medium()) throw std::logic_error("a subpath's end vertex does not scatter");
   const Vec3 w_prev = direction_to(cur, prev), w_next = direction_to(cur, next);
   float forward, backward;
@@ -89,12 +94,17 @@ DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, con
     forward = pdfs.forward;
     backward = pdfs.backward;
   }
-  return area_densities(prev, cur, next, forward, backward);
+  return area_densities(prev, cur, next, forward, backward, next_chain_cos);
 }
 
 DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
                            float backward) {
-  return {solid_angle_to_area(cur, next, forward, next.chain_cos_fwd),
+  return area_densities(prev, cur, next, forward, backward, next.chain_cos_fwd);
+}
+
+DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
+                           float backward, float next_chain_cos) {
+  return {solid_angle_to_area(cur, next, forward, next_chain_cos),
           solid_angle_to_area(cur, prev, backward, prev.chain_cos_bwd)};
 }
 

@@ -45,9 +45,16 @@ struct DensityPair {
   float to_next, to_prev;
 };
 DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next);
+// The same with next's chain cosine given: where `next` ends the other
+// subpath, a chain from it runs on toward that subpath's start, its
+// backward one.
+DensityPair scatter_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next,
+                              float next_chain_cos);
 // The same from the solid-angle densities at `cur` (scattering_both_ways's).
 DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
                            float backward);
+DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const PathVertex& next, float forward,
+                           float backward, float next_chain_cos);
 
 // Density of a light subpath starting at the light vertex `v` (or the
 // emitting surface vertex, or the environment direction): the light

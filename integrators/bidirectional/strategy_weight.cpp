@@ -1,5 +1,6 @@
 #include "integrators/bidirectional/strategy_weight.h"
 
+#include "core/registry/properties.h"
 #include "integrators/bidirectional/path_density.h"
 
 namespace caustica {
@@ -10,12 +11,68 @@ namespace {
 // reading them as 1 lets the discrete choices cancel.
 float remap(float pdf) { return pdf != 0 ? pdf : 1; }
 
+float h(MisHeuristic heuristic, float r) { return heuristic == MisHeuristic::Power ? r * r : r; }
+
+// The sum over every strategy used of h(p' / p), where p is the density of
+// connection (s, t) and p' that of the other strategy, (s, t) itself
+// included where used. `joined`: the path is that connection's, whose end
+// camera[t-1] scatters toward light[s-1] whatever lobe its subpath left it
+// by; otherwise a merge stands in for it, and camera[t-1] passes the path
+// on as its subpath did, through a delta lobe if so.
+float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
+                MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging, bool joined) {
+  const int k = s + t - 1;  // the path has vertices x_0 (on the light) .. x_k (the camera)
+  const auto [light_end, light_before_end, camera_end, camera_before_end] = densities;
+
+  const PathVertex& origin = s > 0 ? light[0] : camera[k];
+  // Ratios of each other strategy's density to this one's, walking away
+  // from the connection one vertex at a time. Strategy s' joins x_{s'-1}
+  // to x_{s'}, so it is possible unless one of them scatters through a
+  // delta lobe (the connection's own endpoints never do) or, for s' = 0, the
+  // path starts on a delta light; a one-segment path from the camera to an
+  // environment light has no strategy s' = 1. Merging at x_i has ratio
+  // p_{i+1} / p times the camera side's density of x_i times eta; it is
+  // possible unless the path leaves x_i through a delta lobe, which a merge
+  // (evaluating the BSDF between the two subpaths' directions) never gives.
+  float sum = joined || (merging.connections && !camera[t - 1].delta) ? 1 : 0, r = 1;
+  const bool merges = merging.eta > 0;
+  // Strategies s' > s: x_i = camera[k - i] for i >= s, whose density from
+  // the light side is the connection's for i = s and s + 1.
+  for (int i = s; i < k; ++i) {
+    const int j = k - i;
+    const float from_light = i == s ? camera_end : i == s + 1 ? camera_before_end : camera[j].pdf_rev;
+    r *= remap(from_light) / remap(camera[j].pdf_fwd);
+    const int sp = i + 1;
+    const bool possible = sp == k && k == 1
+                              ? !origin.environment && !origin.delta_light
+                              : (i == 0 || (i == s && joined) || !camera[j].delta) && (sp == k || !camera[j - 1].delta);
+    if (possible && merging.connections) sum += h(heuristic, r);
+    if (merges && i >= 1 && mergeable(camera[j]) && ((i == s && joined) || !camera[j].delta))
+      sum += h(heuristic, r * remap(camera[j].pdf_fwd) * merging.eta);
+  }
+  // Strategies s' < s: x_i = light[i], whose density from the camera side
+  // is the connection's for i = s - 1 and s - 2.
+  r = 1;
+  for (int sp = s - 1; sp >= 0; --sp) {
+    const float from_camera = sp == s - 1 ? light_end : sp == s - 2 ? light_before_end : light[sp].pdf_rev;
+    r *= remap(from_camera) / remap(light[sp].pdf_fwd);
+    const bool possible =
+        sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
+    if (possible && (merging.connections || sp == 0)) sum += h(heuristic, r);
+    if (merges && sp >= 1 && mergeable(light[sp]) && (sp == s - 1 || !light[sp].delta))
+      sum += h(heuristic, r * remap(light[sp].pdf_fwd) * merging.eta);
+  }
+  return sum;
+}
+
 // What the end of a subpath of n vertices, side[n-1], gives when joined to
 // `other`: the density of sampling `other` from it, and that of sampling
-// side[n-2] back from it (0 when the end starts its subpath).
+// side[n-2] back from it (0 when the end starts its subpath). `other` ends
+// the other subpath, so a specular chain it starts (possible where a merge
+// stands in for the connection) runs on toward that subpath's start.
 DensityPair end_densities(const Scene& scene, std::span<const PathVertex> side, int n, const PathVertex& other) {
-  if (n >= 2) return scatter_densities(side[n - 2], side[n - 1], other);
-  return {scatter_density(scene, nullptr, side[0], other), 0};
+  if (n >= 2) return scatter_densities(side[n - 2], side[n - 1], other, other.chain_cos_bwd);
+  return {scatter_density(scene, nullptr, side[0], other, other.chain_cos_bwd), 0};
 }
 
 // The connection's densities from what its two ends give (end_densities).
@@ -59,42 +116,23 @@ float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std
 }
 
 float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
-                      MisHeuristic heuristic, const ConnectionDensities& densities) {
-  const int k = s + t - 1;  // the path has vertices x_0 (on the light) .. x_k (the camera)
-  const auto [light_end, light_before_end, camera_end, camera_before_end] = densities;
+                      MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging) {
+  return 1 / ratio_sum(light, camera, s, t, heuristic, densities, merging, true);
+}
 
-  const PathVertex& origin = s > 0 ? light[0] : camera[k];
-  const auto h = [&](float r) { return heuristic == MisHeuristic::Power ? r * r : r; };
-  // Ratios of each other strategy's density to this one's, walking away
-  // from the connection one vertex at a time. Strategy s' joins x_{s'-1}
-  // to x_{s'}, so it is possible unless one of them scatters through a
-  // delta lobe (the connection's own endpoints never do) or, for s' = 0, the
-  // path starts on a delta light; a one-segment path from the camera to an
-  // environment light has no strategy s' = 1.
-  float sum = 1, r = 1;
-  // Strategies s' > s: x_i = camera[k - i] for i >= s, whose density from
-  // the light side is the connection's for i = s and s + 1.
-  for (int i = s; i < k; ++i) {
-    const int j = k - i;
-    const float from_light = i == s ? camera_end : i == s + 1 ? camera_before_end : camera[j].pdf_rev;
-    r *= remap(from_light) / remap(camera[j].pdf_fwd);
-    const int sp = i + 1;
-    const bool possible = sp == k && k == 1
-                              ? !origin.environment && !origin.delta_light
-                              : (i == 0 || i == s || !camera[j].delta) && (sp == k || !camera[j - 1].delta);
-    if (possible) sum += h(r);
-  }
-  // Strategies s' < s: x_i = light[i], whose density from the camera side
-  // is the connection's for i = s - 1 and s - 2.
-  r = 1;
-  for (int sp = s - 1; sp >= 0; --sp) {
-    const float from_camera = sp == s - 1 ? light_end : sp == s - 2 ? light_before_end : light[sp].pdf_rev;
-    r *= remap(from_camera) / remap(light[sp].pdf_fwd);
-    const bool possible =
-        sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
-    if (possible) sum += h(r);
-  }
-  return 1 / sum;
+float merge_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
+                   MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging) {
+  return h(heuristic, remap(densities.light_end) * merging.eta) /
+         ratio_sum(light, camera, s, t, heuristic, densities, merging, false);
+}
+
+bool mergeable(const PathVertex& v) { return v.is_surface() && (v.bsdf->lobes() & ~kDelta); }
+
+MisHeuristic read_mis_heuristic(const Properties& props) {
+  const std::string name = props.get_string("mis");
+  if (name == "power") return MisHeuristic::Power;
+  if (name == "balance") return MisHeuristic::Balance;
+  throw props.error("mis", "must be power or balance, not '" + name + "'");
 }
 
 }  // namespace caustica

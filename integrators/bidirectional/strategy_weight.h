@@ -10,6 +10,24 @@ class Scene;
 
 enum class MisHeuristic { Balance, Power };
 
+// Vertex merging (vcm) as further strategies. Merging at an interior
+// vertex x_i (0 < i < k) that scatters off a non-delta surface lobe
+// (mergeable()) takes x_0 .. x_i from the light subpath and x_{i+1} .. x_k
+// from the camera subpath, whose own next vertex must fall within the merge
+// radius r of x_i. Merged against N light subpaths, its density is that of
+// connection strategy s = i + 1 times the camera side's density of x_i times
+// eta = N pi r^2 (Georgiev et al. 2012, section 4.2), so it enters the same
+// ratios. The default, eta = 0, is bdpt: no merging.
+struct Merging {
+  float eta = 0;
+  // Whether the connections (strategies s >= 1) are used; without them
+  // (vcm's merge-only mode) the strategies are s = 0 and the merges.
+  bool connections = true;
+};
+
+// Whether a path may merge at `v`: a surface vertex with a non-delta lobe.
+bool mergeable(const PathVertex& v);
+
 // The multiple importance sampling weight of bidirectional strategy (s, t):
 // the path made of light[0..s) followed by camera[t-1..0], sampled with s
 // light and t camera vertices, weighed against every other (s', t') with
@@ -48,8 +66,19 @@ ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVe
 ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex& camera_prev,
                                            const PathVertex& camera_end, const ScatteringBothWays& at_camera,
                                            const PathVertex& light);
-// The weight from densities the caller already has.
+// The weight from densities the caller already has; with `merging`,
+// weighed against the merges too.
 float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
-                      MisHeuristic heuristic, const ConnectionDensities& densities);
+                      MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging = {});
+// The weight of merging at light[s-1], the light subpath's vertex within
+// the radius of the camera subpath's next one: the path is that of
+// connection (s, t), light[s-1] joined to camera[t-1], whose densities
+// `densities` holds.
+float merge_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,
+                   MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging);
+
+// The heuristic a parameter `mis` names ("power" or "balance").
+class Properties;
+MisHeuristic read_mis_heuristic(const Properties& props);
 
 }  // namespace caustica

@@ -21,6 +21,8 @@ struct Photon {
   // In spectral mode: it met a dispersive surface, so only the hero
   // wavelength's power counts (the others are zero).
   bool hero_only = false;
+  // vcm: which stored light-subpath vertex the photon stands for.
+  uint32_t source = 0;
 };
 
 // Photons in a hashed uniform grid whose cells are as wide as the query

@@ -92,14 +92,39 @@ bool carries_light(const Scene& scene, const std::vector<PathVertex>& x, int s) 
 // Strategy s' as its own samplers would have made the path: the light
 // subpath x_0 .. x_{s'-1} and the camera subpath x_k .. x_{s'}, with their
 // densities computed afresh.
-float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, int sp, MisHeuristic h) {
+float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, int sp, MisHeuristic h,
+                        const Merging& merging = {}) {
   const int k = int(x.size()) - 1;
   std::vector<PathVertex> light(x.begin(), x.begin() + sp), camera(x.rbegin(), x.rend() - sp);
   if (sp >= 1) light[0].kind = PathVertex::Kind::Light;
   if (sp == 0 && !x[0].environment) camera.back().kind = PathVertex::Kind::Surface;
   compute_densities(scene, light);
   compute_densities(scene, camera);
-  return strategy_weight(scene, light, camera, sp, k + 1 - sp, h);
+  return strategy_weight(light, camera, sp, k + 1 - sp, h, connection_densities(scene, light, camera, sp, k + 1 - sp),
+                         merging);
+}
+
+// Merging at x_i (0 < i < k) as vcm would have made the path: the light
+// subpath x_0 .. x_i merged with the camera subpath x_k .. x_{i+1} that
+// went on to x_i itself (so that a specular chain before it ends there).
+float recomputed_merge_weight(const Scene& scene, const std::vector<PathVertex>& x, int i, MisHeuristic h,
+                              const Merging& merging) {
+  const int k = int(x.size()) - 1;
+  std::vector<PathVertex> light(x.begin(), x.begin() + i + 1), camera(x.rbegin(), x.rend() - i);
+  light[0].kind = PathVertex::Kind::Light;
+  compute_densities(scene, light);
+  compute_densities(scene, camera);
+  const std::span<const PathVertex> camera_part = std::span(camera).first(size_t(k - i));
+  return merge_weight(light, camera_part, i + 1, k - i, h,
+                      connection_densities(scene, light, camera_part, i + 1, k - i), merging);
+}
+
+// The camera subpath's own density of x_i, sampled from x_{i+1}: the
+// subpath x_k .. x_i's last forward density, computed afresh.
+float camera_density(const Scene& scene, const std::vector<PathVertex>& x, int i) {
+  std::vector<PathVertex> camera(x.rbegin(), x.rend() - i);
+  compute_densities(scene, camera);
+  return camera.back().pdf_fwd;
 }
 
 // The same scene lit by the sun: a directional light instead of the sky.
@@ -126,7 +151,10 @@ struct Tally {
   int paths = 0, environment = 0, point_light = 0, directional = 0, through_delta = 0, joined = 0, light_sampled = 0;
 };
 
-void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
+// Calls f(x, s, t, light, camera, camera_part, sample) for every path bdpt's
+// subpaths make that a strategy (s, t) could join and that carries light.
+template <class F>
+void for_each_path(const Scene& scene, int samples, F&& f) {
   auto sampler = make_sampler();
   const PathSettings settings{8, 5, 0.95f, 0.1f, false};
   const Film& film = *scene.sensor().film();
@@ -144,45 +172,54 @@ void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) 
         if (s == 0 && (t < 2 || !(camera[t - 1].emitter || camera[t - 1].environment))) continue;
         std::vector<PathVertex> camera_part(camera.begin(), camera.begin() + t);
         if (s == 0 && camera_part.back().environment) camera_part.back().emitter = scene.infinite_emitters()[0];
-        std::vector<PathVertex> x = join(light, camera_part, s, t);
+        const std::vector<PathVertex> x = join(light, camera_part, s, t);
         if (!possible(x, s) || !carries_light(scene, x, s)) continue;
-        const int k = s + t - 1;
-        double sum = 0;
-        for (int sp = 0; sp <= k; ++sp)
-          if (possible(x, sp)) sum += recomputed_weight(scene, x, sp, h);
-        const float own = strategy_weight(scene, std::span(light).first(s), camera_part, s, t, h);
-        // bdpt's own route for s, t >= 2: the densities from the ends' joint evaluation.
-        if (s >= 2 && t >= 2 && joinable(light[s - 1]) && joinable(camera[t - 1])) {
-          const PathVertex &cv = camera[t - 1], &lv = light[s - 1];
-          const Vec3 w = direction_to(cv, lv);
-          const ScatteringBothWays at_camera = scattering_both_ways(cv, direction_to(cv, camera[t - 2]), w);
-          const ScatteringBothWays at_light = scattering_both_ways(lv, direction_to(lv, light[s - 2]), -w);
-          const float joined =
-              strategy_weight(std::span(light).first(s), camera_part, s, t, h,
-                              joined_densities(camera[t - 2], cv, at_camera, light[s - 2], lv, at_light));
-          ASSERT_EQ(joined, own) << "strategy (" << s << ", " << t << ") of sample " << i;
-          ++tally.joined;
-        }
-        // Its route for s = 1: a point sampled on an emitter.
-        if (s == 1 && t >= 2 && joinable(camera[t - 1])) {
-          const PathVertex& cv = camera[t - 1];
-          const ScatteringBothWays at_camera =
-              scattering_both_ways(cv, direction_to(cv, camera[t - 2]), direction_to(cv, light[0]));
-          const float sampled = strategy_weight(std::span(light).first(1), camera_part, 1, t, h,
-                                                light_sample_densities(scene, camera[t - 2], cv, at_camera, light[0]));
-          ASSERT_EQ(sampled, own) << "strategy (1, " << t << ") of sample " << i;
-          ++tally.light_sampled;
-        }
-        const float fresh = recomputed_weight(scene, x, s, h);
-        ++tally.paths;
-        tally.environment += x[0].environment && !delta_light(x[0]);
-        tally.point_light += !x[0].environment && delta_light(x[0]);
-        tally.directional += x[0].environment && delta_light(x[0]);
-        tally.through_delta += std::any_of(x.begin(), x.end(), [](const PathVertex& v) { return v.delta; });
-        ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
-        ASSERT_NEAR(own, fresh, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
+        f(x, s, t, light, camera, camera_part, i);
       }
   }
+}
+
+void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
+  for_each_path(scene, samples,
+                [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>& light,
+                    const std::vector<PathVertex>& camera, const std::vector<PathVertex>& camera_part, int i) {
+                  const int k = s + t - 1;
+                  double sum = 0;
+                  for (int sp = 0; sp <= k; ++sp)
+                    if (possible(x, sp)) sum += recomputed_weight(scene, x, sp, h);
+                  const float own = strategy_weight(scene, std::span(light).first(s), camera_part, s, t, h);
+                  // bdpt's own route for s, t >= 2: the densities from the ends' joint evaluation.
+                  if (s >= 2 && t >= 2 && joinable(light[s - 1]) && joinable(camera[t - 1])) {
+                    const PathVertex &cv = camera[t - 1], &lv = light[s - 1];
+                    const Vec3 w = direction_to(cv, lv);
+                    const ScatteringBothWays at_camera = scattering_both_ways(cv, direction_to(cv, camera[t - 2]), w);
+                    const ScatteringBothWays at_light = scattering_both_ways(lv, direction_to(lv, light[s - 2]), -w);
+                    const float joined =
+                        strategy_weight(std::span(light).first(s), camera_part, s, t, h,
+                                        joined_densities(camera[t - 2], cv, at_camera, light[s - 2], lv, at_light));
+                    ASSERT_EQ(joined, own) << "strategy (" << s << ", " << t << ") of sample " << i;
+                    ++tally.joined;
+                  }
+                  // Its route for s = 1: a point sampled on an emitter.
+                  if (s == 1 && t >= 2 && joinable(camera[t - 1])) {
+                    const PathVertex& cv = camera[t - 1];
+                    const ScatteringBothWays at_camera =
+                        scattering_both_ways(cv, direction_to(cv, camera[t - 2]), direction_to(cv, light[0]));
+                    const float sampled =
+                        strategy_weight(std::span(light).first(1), camera_part, 1, t, h,
+                                        light_sample_densities(scene, camera[t - 2], cv, at_camera, light[0]));
+                    ASSERT_EQ(sampled, own) << "strategy (1, " << t << ") of sample " << i;
+                    ++tally.light_sampled;
+                  }
+                  const float fresh = recomputed_weight(scene, x, s, h);
+                  ++tally.paths;
+                  tally.environment += x[0].environment && !delta_light(x[0]);
+                  tally.point_light += !x[0].environment && delta_light(x[0]);
+                  tally.directional += x[0].environment && delta_light(x[0]);
+                  tally.through_delta += std::any_of(x.begin(), x.end(), [](const PathVertex& v) { return v.delta; });
+                  ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
+                  ASSERT_NEAR(own, fresh, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << i;
+                });
 }
 
 TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
@@ -208,6 +245,50 @@ TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
         tally.paths, tally.environment, tally.point_light, tally.directional, tally.through_delta, tally.joined,
         tally.light_sampled);
   }
+}
+
+// With vertex merging (vcm) every interior vertex on a non-delta surface
+// is one more strategy: the weights of the connections used and of the
+// merges sum to one over every path, with connections (vcm's both mode) and
+// without (its merge mode, where only s = 0 and the merges remain). With
+// the balance heuristic a merge's weight is its density's share, so its
+// ratio to connection s = i + 1's is the camera subpath's density of x_i
+// times eta, that density computed afresh.
+TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
+  const auto glass = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "16"}});
+  const auto mixed = test::scene_from_xml(kMixedScene);
+  int paths = 0, merges = 0, ratios = 0;
+  for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance})
+    for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false}})
+      for (const Scene* scene : {glass.scene.get(), mixed.scene.get()})
+        for_each_path(
+            *scene, 300,
+            [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
+                const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
+              const int k = s + t - 1;
+              double sum = 0;
+              for (int sp = 0; sp <= k; ++sp)
+                if (possible(x, sp) && (merging.connections || sp == 0))
+                  sum += recomputed_weight(*scene, x, sp, h, merging);
+              for (int i = 1; i < k; ++i) {
+                if (!mergeable(x[i]) || x[i].delta) continue;
+                const float w = recomputed_merge_weight(*scene, x, i, h, merging);
+                sum += w;
+                ++merges;
+                if (h != MisHeuristic::Balance || !merging.connections || x[i + 1].delta || !possible(x, i + 1))
+                  continue;
+                const float expected = camera_density(*scene, x, i) * merging.eta;
+                ASSERT_NEAR(w / recomputed_weight(*scene, x, i + 1, h, merging), expected, 1e-3 * expected)
+                    << "merge at x_" << i << " of strategy (" << s << ", " << t << ") of sample " << sample;
+                ++ratios;
+              }
+              ++paths;
+              ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << sample;
+            });
+  EXPECT_GT(paths, 5000);
+  EXPECT_GT(merges, 5000);
+  EXPECT_GT(ratios, 1000);
+  std::printf("%d paths, %d merges, %d merge-to-connection ratios checked\n", paths, merges, ratios);
 }
 
 }  // namespace

@@ -1,0 +1,313 @@
+// vcm: vertex connection and merging (Georgiev, Krivanek, Davidovic and
+// Slusallek 2012). Each iteration traces one light subpath per pixel and
+// keeps their vertices; every pixel then traces a camera subpath that
+// joins the light subpath of its own index by every bdpt strategy and
+// merges, at each of its vertices, with the kept light vertices of every
+// light subpath within the iteration's radius (a photon map of the light
+// subpaths). Merging finds what connections cannot, light reflected by a
+// diffuse surface seen through glass (specular-diffuse-specular paths),
+// and connections what merging finds badly; multiple importance sampling
+// over both, with merging at x_i counted as a strategy of density
+// p_{i+1} p_camera(x_i) N pi r^2, gives each path to the strategies that
+// find it best. The radius shrinks over the iterations as in progressive
+// photon mapping (radius_i^2 = radius_0^2 prod_{k<=i} (k + alpha) / (k + 1)),
+// so the merges' bias vanishes as iterations add up.
+//
+// `mode` chooses the strategies: both (vcm), connect (the connections
+// alone: bdpt, its light subpaths traced per iteration) or merge (the
+// camera subpath's own emission hits and the merges: a progressive photon
+// map gathered at every camera vertex). The weights are those of the full
+// path's densities (strategy_weight.h), the same as the paper's recursive
+// form. Light subpath i of iteration n draws from (seed, n, i) and the
+// light-tracing splats sum exactly, so the image does not depend on the
+// thread count.
+//
+//   <integrator type="vcm"><string name="mode" value="both"/></integrator>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/film/film_buffer.h"
+#include "core/film/splat_list.h"
+#include "core/math/constants.h"
+#include "core/registry/properties.h"
+#include "core/render/camera_sample.h"
+#include "core/render/iterative_integrator.h"
+#include "core/render/path_settings.h"
+#include "core/scene/scene.h"
+#include "integrators/bidirectional/camera_connection.h"
+#include "integrators/bidirectional/connection.h"
+#include "integrators/bidirectional/subpath.h"
+#include "integrators/photon/photon_map.h"
+#include "integrators/photon/photon_settings.h"
+
+namespace caustica {
+namespace {
+
+enum class VcmMode { Both, Connect, Merge };
+
+VcmMode read_mode(const Properties& props) {
+  const std::string name = props.get_string("mode");
+  if (name == "both") return VcmMode::Both;
+  if (name == "connect") return VcmMode::Connect;
+  if (name == "merge") return VcmMode::Merge;
+  throw props.error("mode", "must be both, connect or merge, not '" + name + "'");
+}
+
+PhotonSettings read_merge_settings(const Properties& props) {
+  PhotonSettings s{1, props.get_float("radius"), props.get_float("alpha")};
+  if (!(s.radius >= 0)) throw props.error("radius", "must not be negative");
+  if (!(s.alpha > 0 && s.alpha < 1)) throw props.error("alpha", "must be in (0, 1)");
+  return s;
+}
+
+class VertexConnectionMerging;
+
+// A light-subpath vertex that merges may use.
+struct KeptVertex {
+  uint32_t path, vertex;
+};
+
+class VcmPixels final : public IterationState {
+ public:
+  VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uint64_t seed);
+  bool iterate(uint64_t iteration, const std::atomic<bool>* stop) override;
+  Color estimate(Vec2i pixel) const override;
+  std::string summary() const override;
+
+ private:
+  bool trace_light_subpaths(uint64_t iteration, const std::atomic<bool>* stop);
+  void keep_vertices(float radius);
+  void camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration, float radius);
+  Color merge(const std::vector<PathVertex>& camera, int t, float radius) const;
+
+  const VertexConnectionMerging& vcm_;
+  const Scene& scene_;
+  uint64_t seed_;
+  int width_, height_;
+  Merging merging_;
+  // The camera subpaths' estimates, weighted by their filter weights, and
+  // those weights (filter importance sampling: the pixel's estimate is
+  // their weighted mean).
+  std::vector<Color> camera_sums_;
+  std::vector<double> filter_weights_;
+  FilmBuffer light_image_;  // the light-tracing splats (t = 1)
+  uint64_t iterations_ = 0;
+  float radius_ = 0;
+  // Kept between iterations, so that their memory is reused.
+  std::vector<std::vector<PathVertex>> light_paths_;
+  std::vector<SplatList> splats_;
+  std::vector<Photon> kept_;
+  std::vector<KeptVertex> kept_vertices_;
+  PhotonMap map_;
+};
+
+class VertexConnectionMerging final : public IterativeIntegrator {
+ public:
+  explicit VertexConnectionMerging(const Properties& props)
+      : settings_(read_path_settings(props)),
+        heuristic_(read_mis_heuristic(props)),
+        mode_(read_mode(props)),
+        merge_(read_merge_settings(props)) {}
+
+  std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
+    return std::make_unique<VcmPixels>(*this, scene, seed);
+  }
+
+  std::string plan(const Scene& scene) const override {
+    const std::string radius = merge_.radius > 0 ? std::to_string(merge_.radius) : "1/200 of the scene's diagonal";
+    std::string what = mode_ == VcmMode::Connect ? "every bdpt connection, no merging"
+                       : mode_ == VcmMode::Merge ? "emission hits and merging at every camera vertex, no connections"
+                                                 : "every bdpt connection and merging at every camera vertex";
+    return "vcm: one light subpath per pixel and iteration; " + what + " (radius " + radius +
+           " at first, shrinking with alpha " + std::to_string(merge_.alpha) + "), weighed by the " +
+           (heuristic_ == MisHeuristic::Power ? "power" : "balance") + " heuristic" +
+           (scene.features().caustic_paths && mode_ != VcmMode::Connect
+                ? "; caustics seen through specular surfaces by merging"
+                : "");
+  }
+
+ private:
+  friend class VcmPixels;
+  PathSettings settings_;
+  MisHeuristic heuristic_;
+  VcmMode mode_;
+  PhotonSettings merge_;
+};
+
+// Light subpaths traced in blocks of this many, each block's splats kept in
+// its own list.
+constexpr size_t kBlock = 256;
+
+VcmPixels::VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uint64_t seed)
+    : vcm_(vcm),
+      scene_(scene),
+      seed_(seed),
+      width_(scene.sensor().film()->width()),
+      height_(scene.sensor().film()->height()),
+      camera_sums_(size_t(width_) * height_),
+      filter_weights_(size_t(width_) * height_),
+      light_image_(width_, height_, {"R", "G", "B"}, FilmBuffer::Moments::None) {
+  light_image_.enable_splats();
+  merging_.connections = vcm.mode_ != VcmMode::Merge;
+}
+
+bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
+  radius_ = round_radius(vcm_.merge_, initial_radius(scene_, vcm_.merge_), uint32_t(iteration));
+  light_paths_.resize(size_t(width_) * height_);
+  const double paths = double(light_paths_.size());
+  merging_.eta = vcm_.mode_ == VcmMode::Connect ? 0 : float(paths * kPi * double(radius_) * radius_);
+  if (!trace_light_subpaths(iteration, stop)) return false;
+  if (merging_.eta > 0) keep_vertices(radius_);
+  tbb::parallel_for(0, height_, [&](int y) {
+    auto sampler = scene_.sensor().sampler()->clone();
+    for (int x = 0; x < width_; ++x) camera_sample(*sampler, {x, y}, iteration, radius_);
+  });
+  for (const SplatList& list : splats_) {
+    light_image_.add_splats(list, scene_.sensor().film()->filter(), 0, height_);
+    light_image_.record_dropped(list);
+  }
+  light_image_.add_splat_paths(1);
+  ++iterations_;
+  return true;
+}
+
+// One per pixel, each joined to the camera (strategies t = 1).
+bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>* stop) {
+  const PathSettings& settings = vcm_.settings_;
+  const size_t blocks = (light_paths_.size() + kBlock - 1) / kBlock;
+  splats_.resize(blocks);
+  const auto stopped = [&] { return stop && stop->load(); };
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    if (stopped()) return;
+    auto sampler = scene_.sensor().sampler()->clone();
+    SplatList& splats = splats_[b];
+    splats.clear();
+    for (size_t i = b * kBlock; i < std::min(light_paths_.size(), (b + 1) * kBlock); ++i) {
+      sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
+      std::vector<PathVertex>& light = light_paths_[i];
+      trace_light_subpath(scene_, *sampler, settings, light);
+      compute_densities(scene_, light);
+      if (!merging_.connections) continue;
+      for (int s = 1; s <= int(light.size()); ++s) {
+        if ((s == 1 && settings.hide_emitters) || (settings.max_depth >= 0 && s > settings.max_depth)) continue;
+        const auto c = connect_to_camera(scene_, light, s, *sampler);
+        if (!c) continue;
+        const std::span<const PathVertex> lens{&c->camera, 1}, part = std::span(light).first(s);
+        splats.set_source({{int(i % size_t(width_)), int(i / size_t(width_))}, iteration});
+        splats.add(c->raster, c->value * strategy_weight(part, lens, s, 1, vcm_.heuristic_,
+                                                         connection_densities(scene_, part, lens, s, 1), merging_));
+      }
+    }
+  });
+  return !stopped();
+}
+
+// The vertices merges may use, in a photon map: past the light's own, on a
+// surface with a non-delta lobe, short enough to leave a camera segment.
+void VcmPixels::keep_vertices(float radius) {
+  kept_.clear();
+  kept_vertices_.clear();
+  const int64_t max_depth = vcm_.settings_.max_depth;
+  for (size_t i = 0; i < light_paths_.size(); ++i) {
+    const std::vector<PathVertex>& light = light_paths_[i];
+    for (size_t v = 1; v < light.size(); ++v) {
+      if (!mergeable(light[v]) || (max_depth >= 0 && int64_t(v) >= max_depth)) continue;
+      Photon& ph = kept_.emplace_back();
+      ph.p = light[v].p();
+      ph.wi = direction_to(light[v], light[v - 1]);
+      ph.n = light[v].si.ng;
+      ph.power = light[v].beta;
+      ph.depth = uint32_t(v);
+      ph.source = uint32_t(kept_vertices_.size());
+      kept_vertices_.push_back({uint32_t(i), uint32_t(v)});
+    }
+  }
+  map_.build(kept_, radius);
+}
+
+void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration, float radius) {
+  thread_local std::vector<PathVertex> camera;
+  const PathSettings& settings = vcm_.settings_;
+  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
+  trace_camera_subpath(scene_, cs.ray, sampler, settings, camera);
+  compute_densities(scene_, camera);
+  const std::vector<PathVertex>& light = light_paths_[size_t(pixel.y) * width_ + pixel.x];
+  const int max_s = merging_.connections ? int(light.size()) : 0;
+  Color sum;
+  for (int t = 2; t <= int(camera.size()); ++t) {
+    for (int s = 0; s <= max_s; ++s) {
+      const int k = s + t - 1;
+      if ((settings.max_depth >= 0 && k > settings.max_depth) || (k == 1 && settings.hide_emitters)) continue;
+      sum += connect(scene_, light, s, camera, t, sampler, nullptr, vcm_.heuristic_, merging_);
+    }
+    if (merging_.eta > 0) sum += merge(camera, t, radius);
+  }
+  const size_t p = size_t(pixel.y) * width_ + pixel.x;
+  camera_sums_[p] += sum * cs.weight;
+  filter_weights_[p] += cs.weight;
+}
+
+// Merging at camera[t-1] with the kept light vertices within the radius: a
+// light subpath of s vertices ending there joins camera[t-2] as connection
+// (s, t - 1) would, the camera subpath's own vertex standing in for its
+// end, and its value is the photon density estimate's (photon_density.h).
+Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radius) const {
+  const PathVertex& cv = camera[t - 1];
+  if (!mergeable(cv)) return {};
+  const int64_t max_depth = vcm_.settings_.max_depth;
+  const Vec3 wo = direction_to(cv, camera[t - 2]);
+  const std::span<const PathVertex> camera_part = std::span(camera).first(t - 1);
+  Color sum;
+  map_.for_each_within(cv.p(), radius, [&](const Photon& ph) {
+    if (max_depth >= 0 && int64_t(ph.depth) + t - 1 > max_depth) return;
+    if (dot(ph.n, cv.si.ng) < 0.5f) return;
+    const float cos_g = abs_dot(ph.wi, cv.si.ng);
+    if (cos_g == 0) return;
+    const Color f = cv.bsdf->eval(wo, ph.wi) * (abs_dot(ph.wi, cv.si.shading.n) / cos_g);
+    if (f.is_black()) return;
+    const KeptVertex kept = kept_vertices_[ph.source];
+    const int s = int(kept.vertex) + 1;
+    const std::span<const PathVertex> light = std::span(light_paths_[kept.path]).first(size_t(s));
+    const float w = merge_weight(light, camera_part, s, t - 1, vcm_.heuristic_,
+                                 connection_densities(scene_, light, camera_part, s, t - 1), merging_);
+    sum += f * ph.power * w;
+  });
+  return cv.beta * sum / merging_.eta;
+}
+
+Color VcmPixels::estimate(Vec2i pixel) const {
+  const size_t p = size_t(pixel.y) * width_ + pixel.x;
+  float light[3];
+  light_image_.resolve_pixel(p, light);
+  const Color camera = filter_weights_[p] != 0 ? camera_sums_[p] / float(filter_weights_[p]) : Color();
+  return camera + Color(light[0], light[1], light[2]);
+}
+
+std::string VcmPixels::summary() const {
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.6g", radius_);
+  return "iterations=" + std::to_string(iterations_) + ", last radius=" + radius;
+}
+
+}  // namespace
+
+CAUSTICA_REGISTER_PLUGIN(
+    VertexConnectionMerging, "integrator", "vcm",
+    path_settings_params({{"mis", ParamType::String, "power", "MIS heuristic: power (exponent 2) or balance"},
+                          {"mode", ParamType::String, "both",
+                           "strategies: both (connections and merging), connect (bdpt's alone) or merge (emission "
+                           "hits and merging: a progressive photon map)"},
+                          {"radius", ParamType::Float, "0",
+                           "initial merge radius; 0 for 1/200 of the scene's bounding-box diagonal"},
+                          {"alpha", ParamType::Float, "0.75",
+                           "how fast the radius shrinks: the share of its area each iteration keeps, in (0, 1)"}},
+                         1),
+    {});
+
+}  // namespace caustica
