@@ -8,7 +8,7 @@ so the list may run ahead of the binary.
 from dataclasses import dataclass
 
 # In plot and table order.
-INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=10000", "direct"]
+INTEGRATORS = ["path", "bdpt", "ptracer", "photon:photons=10000", "sppm:photons=10000", "vcm", "direct"]
 
 # Every integrator runs with each sampler; a run is named INTEGRATOR@SAMPLER
 # for every sampler but the first (independent, passed to the scene even

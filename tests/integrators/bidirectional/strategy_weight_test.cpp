@@ -257,12 +257,17 @@ TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
 TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   const auto glass = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "16"}});
   const auto mixed = test::scene_from_xml(kMixedScene);
-  int paths = 0, merges = 0, ratios = 0;
+  // The floor in smooth plastic, so that many paths leave it through the coat.
+  std::string coated_xml = kMixedScene;
+  const std::string floor = "<bsdf type='diffuse'/></shape>";
+  coated_xml.replace(coated_xml.find(floor), floor.size(), "<bsdf type='plastic'/></shape>");
+  const auto coated = test::scene_from_xml(coated_xml);
+  int paths = 0, merges = 0, ratios = 0, through_coat = 0;
   for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance})
     for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false}})
-      for (const Scene* scene : {glass.scene.get(), mixed.scene.get()})
+      for (const Scene* scene : {glass.scene.get(), mixed.scene.get(), coated.scene.get()})
         for_each_path(
-            *scene, 300,
+            *scene, 1000,
             [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
                 const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
               const int k = s + t - 1;
@@ -271,6 +276,7 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
                 if (possible(x, sp) && (merging.connections || sp == 0))
                   sum += recomputed_weight(*scene, x, sp, h, merging);
               for (int i = 1; i < k; ++i) {
+                if (mergeable(x[i]) && x[i].delta) ++through_coat;
                 if (!mergeable(x[i]) || x[i].delta) continue;
                 const float w = recomputed_merge_weight(*scene, x, i, h, merging);
                 sum += w;
@@ -288,7 +294,11 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   EXPECT_GT(paths, 5000);
   EXPECT_GT(merges, 5000);
   EXPECT_GT(ratios, 1000);
-  std::printf("%d paths, %d merges, %d merge-to-connection ratios checked\n", paths, merges, ratios);
+  // Vertices a merge cannot make: the path leaves them through the delta
+  // coat of smooth plastic.
+  EXPECT_GT(through_coat, 100);
+  std::printf("%d paths, %d merges, %d merge-to-connection ratios checked, %d vertices left through a delta coat\n",
+              paths, merges, ratios, through_coat);
 }
 
 }  // namespace

@@ -30,6 +30,14 @@
 // see a wrong schedule, lie outside twice that interval around the unbiased
 // value (sppm: up to 16 iterations, its bias falling faster). Seeds are
 // fixed.
+//
+// - vcm's merge-only mode: no connection can make these paths (the light is
+//   a point, the camera orthographic), so every path is a merge at the
+//   floor, direct light included, weighed one. With one light subpath per
+//   pixel (32x32 of them, the view the same) and photon's radius schedule,
+//   its mean after N iterations averages the disks of the direct and the
+//   caustic irradiance alike; the same tests apply (the bias's size up to
+//   16 iterations).
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -52,18 +60,21 @@ constexpr double kRadius = 0.2, kAlpha = 0.3;
 constexpr double kCentreX = 0.25, kHalf = 0.05;  // the view: x in [0.2, 0.3], y in [-0.05, 0.05]
 constexpr int kPixels = 8, kRuns = 12;
 
-// `integrator`: photon or sppm.
-std::string scene_xml(const std::string& integrator) {
-  return "<scene version='3.0.0'><integrator type='" + integrator +
-         "'><integer name='photons' value='20000'/>"
-         "<float name='radius' value='" +
-         std::to_string(kRadius) + "'/><float name='alpha' value='" + std::to_string(kAlpha) +
+// `integrator`: photon or sppm (20000 photons a round), or vcm; `pixels`
+// across the film.
+std::string scene_xml(const std::string& integrator, int pixels = kPixels) {
+  return "<scene version='3.0.0'><integrator type='" + integrator + "'>" +
+         (integrator == "vcm" ? "<string name='mode' value='merge'/>" : "<integer name='photons' value='20000'/>") +
+         "<float name='radius' value='" + std::to_string(kRadius) + "'/><float name='alpha' value='" +
+         std::to_string(kAlpha) +
          "'/></integrator>"
          "<sensor type='orthographic'><transform name='to_world'><scale x='" +
          std::to_string(kHalf) + "' y='" + std::to_string(kHalf) + "'/><lookat origin='" + std::to_string(kCentreX) +
          ", 0, 1' target='" + std::to_string(kCentreX) +
          ", 0, 0' up='0, 1, 0'/></transform>"
-         "<film type='hdrfilm'><integer name='width' value='8'/><integer name='height' value='8'/>"
+         "<film type='hdrfilm'><integer name='width' value='" +
+         std::to_string(pixels) + "'/><integer name='height' value='" + std::to_string(pixels) +
+         "'/>"
          "<rfilter type='box'/></film></sensor>"
          "<shape type='rectangle'><transform name='to_world'><translate x='1'/></transform>"
          "<bsdf type='diffuse'><rgb name='reflectance' value='" +
@@ -83,9 +94,10 @@ double irradiance(double x, double y, double fx) {
   return kIntensity * kH / (d2 * std::sqrt(d2));
 }
 
-// The caustic irradiance averaged over the disk of radius r around (x, y):
-// 16 Gauss-Legendre nodes in the radius (weighted by it), 48 angles.
-double disk_mean_caustic(double x, double y, double r) {
+// The irradiance from the source whose foot is (fx, 0) averaged over the
+// disk of radius r around (x, y): 16 Gauss-Legendre nodes in the radius
+// (weighted by it), 48 angles.
+double disk_mean(double x, double y, double r, double fx) {
   static const double node[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
                                  0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
   static const double weight[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
@@ -98,12 +110,14 @@ double disk_mean_caustic(double x, double y, double r) {
     double ring = 0;
     for (int j = 0; j < kAngles; ++j) {
       const double phi = 2 * M_PI * (j + 0.5) / kAngles;
-      ring += irradiance(x + rho * std::cos(phi), y + rho * std::sin(phi), -kA);
+      ring += irradiance(x + rho * std::cos(phi), y + rho * std::sin(phi), fx);
     }
     sum += w * 0.5 * r * rho * ring * 2 * M_PI / kAngles;
   }
   return sum / (M_PI * r * r);
 }
+
+double disk_mean_caustic(double x, double y, double r) { return disk_mean(x, y, r, -kA); }
 
 // photon's radius of every round, from the schedule's definition.
 std::vector<double> round_radii(int rounds) {
@@ -118,17 +132,21 @@ std::vector<double> round_radii(int rounds) {
 
 // The image's mean: pixels by the midpoint rule over 4x4 points each
 // (image right is +x, image down is -y); `rounds` 0 for the unbiased value.
-double expected_mean(int rounds) {
+// With `merged_direct` the direct light too is a disk mean (vcm's merges).
+double expected_mean(int rounds, bool merged_direct = false) {
   const auto radii = round_radii(rounds);
   constexpr int n = kPixels * 4;
   double sum = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const double x = kCentreX + kHalf * (2 * (i + 0.5) / n - 1), y = -kHalf * (2 * (j + 0.5) / n - 1);
-      double caustic = 0;
+      double caustic = 0, direct = rounds == 0 || !merged_direct ? irradiance(x, y, kA) : 0;
       if (rounds == 0) caustic = irradiance(x, y, -kA);
-      for (double r : radii) caustic += disk_mean_caustic(x, y, r) / rounds;
-      sum += kRho / M_PI * (irradiance(x, y, kA) + caustic);
+      for (double r : radii) {
+        caustic += disk_mean_caustic(x, y, r) / rounds;
+        if (merged_direct) direct += disk_mean(x, y, r, kA) / rounds;
+      }
+      sum += kRho / M_PI * (direct + caustic);
     }
   return sum / (n * n);
 }
@@ -279,6 +297,32 @@ TEST(SppmBias, ImageAndRadiusFollowTheEstimatorsDefinition) {
     if (n <= 16) {
       EXPECT_GT(std::abs(mean - unbiased), 2 * t_critical * mean_se)
           << n << " iterations: the bias " << mean - unbiased << " is lost in the noise";
+    }
+  }
+}
+
+TEST(VcmMergeBias, FallsWithTheIterationsAsTheRadiusSchedulePredicts) {
+  constexpr int kFilm = 32;
+  const auto scene = test::scene_from_xml(scene_xml("vcm", kFilm));
+  const std::vector<test::Region> whole{{{0, 0}, {kFilm, kFilm}}};
+  const int iterations[] = {1, 4, 16, 64};
+  const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, int(std::size(iterations))), kRuns - 1);
+  const double unbiased = expected_mean(0);
+  uint64_t seed = 500;
+  for (int n : iterations) {
+    uint64_t non_finite = 0;
+    const test::RegionEstimate e =
+        test::estimate_regions(scene, whole, uint32_t(n), kRuns, seed += kRuns, &non_finite)[0];
+    EXPECT_EQ(non_finite, 0u);
+    const double predicted = expected_mean(n, true);
+    EXPECT_LT(std::abs(e.mean - predicted), t_critical * e.standard_error)
+        << n << " iterations: " << e.mean << " +- " << e.standard_error << ", predicted " << predicted << " (bias "
+        << predicted - unbiased << "), unbiased " << unbiased;
+    // Fewer light paths than photon's photons: at 64 iterations the bias
+    // nears the noise.
+    if (n <= 16) {
+      EXPECT_GT(std::abs(e.mean - unbiased), 2 * t_critical * e.standard_error)
+          << n << " iterations: the bias " << e.mean - unbiased << " is too small to tell a schedule from another";
     }
   }
 }
