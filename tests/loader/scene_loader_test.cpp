@@ -370,7 +370,7 @@ TEST(SceneLoader, UnknownIntegratorOverrideListsTheAvailableOnes) {
   } catch (const std::exception& e) {
     EXPECT_THAT(
         e.what(),
-        HasSubstr("unknown integrator 'bdpt2' (available: aov, bdpt, direct, guided_path, path, photon, ptracer"));
+        HasSubstr("unknown integrator 'bdpt2' (available: aov, bdpt, direct, guided_path, mlt, path, photon, ptracer"));
   }
 }
 
