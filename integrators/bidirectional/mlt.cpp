@@ -131,8 +131,6 @@ Contribution evaluate(const Scene& scene, const MltSettings& mlt, PrimarySampleS
   return {raster, value * float(strategies)};
 }
 
-class MetropolisLightTransport;
-
 // One chain: its numbers, its path length and its current state.
 struct Chain {
   PrimarySampleSpace numbers;

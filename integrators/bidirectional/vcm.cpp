@@ -59,13 +59,6 @@ VcmMode read_mode(const Properties& props) {
   throw props.error("mode", "must be both, connect or merge, not '" + name + "'");
 }
 
-PhotonSettings read_merge_settings(const Properties& props) {
-  PhotonSettings s{1, props.get_float("radius"), props.get_float("alpha")};
-  if (!(s.radius >= 0)) throw props.error("radius", "must not be negative");
-  if (!(s.alpha > 0 && s.alpha < 1)) throw props.error("alpha", "must be in (0, 1)");
-  return s;
-}
-
 class VertexConnectionMerging;
 
 // A light-subpath vertex that merges may use.
@@ -113,7 +106,7 @@ class VertexConnectionMerging final : public IterativeIntegrator {
       : settings_(read_path_settings(props)),
         heuristic_(read_mis_heuristic(props)),
         mode_(read_mode(props)),
-        merge_(read_merge_settings(props)) {}
+        merge_(read_radius_schedule(props)) {}
 
   std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
     return std::make_unique<VcmPixels>(*this, scene, seed);

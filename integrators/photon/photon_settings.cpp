@@ -8,11 +8,19 @@
 
 namespace caustica {
 
-PhotonSettings read_photon_settings(const Properties& props) {
-  PhotonSettings s{props.get_int("photons"), props.get_float("radius"), props.get_float("alpha")};
-  if (s.photons < 1) throw props.error("photons", "must be at least 1");
+PhotonSettings read_radius_schedule(const Properties& props) {
+  PhotonSettings s;
+  s.radius = props.get_float("radius");
+  s.alpha = props.get_float("alpha");
   if (!(s.radius >= 0)) throw props.error("radius", "must not be negative");
   if (!(s.alpha > 0 && s.alpha < 1)) throw props.error("alpha", "must be in (0, 1)");
+  return s;
+}
+
+PhotonSettings read_photon_settings(const Properties& props) {
+  PhotonSettings s = read_radius_schedule(props);
+  s.photons = props.get_int("photons");
+  if (s.photons < 1) throw props.error("photons", "must be at least 1");
   return s;
 }
 

@@ -15,6 +15,9 @@ struct PhotonSettings {
 };
 
 PhotonSettings read_photon_settings(const Properties& props);
+// Only the radius schedule (radius and alpha), for an integrator whose
+// photons are not counted by a parameter (vcm: one light path per pixel).
+PhotonSettings read_radius_schedule(const Properties& props);
 
 // The first round's radius: the one given, else 1/200 of the scene's
 // bounding-box diagonal.

@@ -96,4 +96,12 @@ double difference_score(const RegionEstimate& a, const RegionEstimate& b) {
   return se2 > 0 ? (a.mean - b.mean) / std::sqrt(se2) : 0;
 }
 
+std::pair<double, double> mean_and_standard_error(const std::vector<double>& values) {
+  double sum = 0, sum2 = 0;
+  for (double x : values) sum += x;
+  const double mean = sum / double(values.size());
+  for (double x : values) sum2 += (x - mean) * (x - mean);
+  return {mean, std::sqrt(sum2 / double(values.size() - 1) / double(values.size()))};
+}
+
 }  // namespace caustica::test

@@ -2,12 +2,16 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/loader/scene_loader.h"
 #include "core/math/vec.h"
 
 namespace caustica::test {
+
+// The mean of values from independent runs and its standard error.
+std::pair<double, double> mean_and_standard_error(const std::vector<double>& values);
 
 // A rectangle of pixels [lo, hi).
 struct Region {

@@ -31,4 +31,11 @@ std::string scene_test_name(const testing::TestParamInfo<const char*>& info) {
   return s;
 }
 
+LoadedScene scene_with_integrator(const std::string& name, const std::string& spec, int res) {
+  auto scene =
+      load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", std::to_string(res)}});
+  scene.integrator = make_integrator(spec);
+  return scene;
+}
+
 }  // namespace caustica::test

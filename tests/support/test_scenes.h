@@ -23,6 +23,10 @@ FilmBuffer render_scene(const LoadedScene& scene, uint32_t spp, uint64_t seed = 
 // or "" if it loads.
 std::string load_error(const std::string& xml, const std::string& name = "test.xml");
 
+// scenes/NAME.xml at res x res pixels, rendered by the integrator `spec`
+// names ("sppm:photons=10000") instead of the file's.
+LoadedScene scene_with_integrator(const std::string& name, const std::string& spec, int res = 24);
+
 // A test name for a scene parameter: "cornell-box-glass" -> "cornell_box_glass".
 std::string scene_test_name(const testing::TestParamInfo<const char*>& info);
 

@@ -117,12 +117,6 @@ TEST(PrimarySampleSpace, RejectionRestoresTheStateAndStreamsAreApart) {
   }
 }
 
-LoadedScene box(const std::string& name, const std::string& integrator) {
-  auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "24"}});
-  scene.integrator = make_integrator(integrator);
-  return scene;
-}
-
 const char* const kMlt = "mlt:bootstrap=5000,chains=64";
 constexpr int kRuns = 16;
 const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
@@ -138,9 +132,11 @@ TEST_P(MltAgreement, RegionMeansMatchBdpt) {
   const auto regions = test::grid_regions(24, 24, 6);
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.01, int(std::size(kScenes) * regions.size())), kRuns - 1);
-  const auto bdpt = test::estimate_regions(box(name, "bdpt:max_depth=5"), regions, 32, kRuns, 4000);
+  const auto bdpt =
+      test::estimate_regions(test::scene_with_integrator(name, "bdpt:max_depth=5"), regions, 32, kRuns, 4000);
   uint64_t non_finite = 0;
-  const auto mlt = test::estimate_regions(box(name, kMlt), regions, 64, kRuns, 4100, &non_finite);
+  const auto mlt =
+      test::estimate_regions(test::scene_with_integrator(name, kMlt), regions, 64, kRuns, 4100, &non_finite);
   EXPECT_EQ(non_finite, 0u);
   for (size_t i = 0; i < regions.size(); ++i)
     EXPECT_LT(std::abs(test::difference_score(mlt[i], bdpt[i])), t_critical)
@@ -154,8 +150,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, MltAgreement, testing::ValuesIn(kScenes), test:
 // several seeds, against bdpt's image mean at the same depth (1%, Student's
 // t over the seeds, bdpt's error added).
 TEST(Mlt, NormalisationIsTheImageMeanLuminance) {
-  const auto mlt = box("cornell-box-glass", kMlt);
-  const auto bdpt = box("cornell-box-glass", "bdpt:max_depth=5");
+  const auto mlt = test::scene_with_integrator("cornell-box-glass", kMlt);
+  const auto bdpt = test::scene_with_integrator("cornell-box-glass", "bdpt:max_depth=5");
   std::vector<double> b, y;
   for (uint64_t seed = 0; seed < uint64_t(kRuns); ++seed) {
     RenderStats stats;
@@ -167,22 +163,15 @@ TEST(Mlt, NormalisationIsTheImageMeanLuminance) {
     for (size_t p = 0; p < pixels.size(); p += 3) sum += Color(pixels[p], pixels[p + 1], pixels[p + 2]).luminance();
     y.push_back(sum / double(pixels.size() / 3));
   }
-  const auto mean_and_error = [](const std::vector<double>& v) {
-    double sum = 0, sum2 = 0;
-    for (double x : v) sum += x;
-    const double mean = sum / double(v.size());
-    for (double x : v) sum2 += (x - mean) * (x - mean);
-    return std::pair{mean, std::sqrt(sum2 / double(v.size() - 1) / double(v.size()))};
-  };
-  const auto [b_mean, b_error] = mean_and_error(b);
-  const auto [y_mean, y_error] = mean_and_error(y);
+  const auto [b_mean, b_error] = test::mean_and_standard_error(b);
+  const auto [y_mean, y_error] = test::mean_and_standard_error(y);
   EXPECT_LT(std::abs(b_mean - y_mean), test::two_sided_t_critical(0.01, kRuns - 1) * std::hypot(b_error, y_error))
       << "normalisation " << b_mean << " +- " << b_error << ", bdpt's mean luminance " << y_mean << " +- " << y_error;
 }
 
 // Chains draw from (seed, chain) and their splats sum exactly.
 TEST(Mlt, SameImageForAnyThreadCount) {
-  const auto scene = box("cornell-box-glass", kMlt);
+  const auto scene = test::scene_with_integrator("cornell-box-glass", kMlt);
   EXPECT_EQ(test::render_scene(scene, 3, 9, 1).resolve(), test::render_scene(scene, 3, 9, 2).resolve());
 }
 
@@ -205,7 +194,7 @@ TEST(Mlt, BadParameters) {
 
 TEST(Mlt, RefusesMediaAndSpectralTransport) {
   for (const char* name : {"cornell-box-fog", "cornell-box-spectral"}) {
-    const auto scene = box(name, "mlt");
+    const auto scene = test::scene_with_integrator(name, "mlt");
     EXPECT_THROW(scene.integrator->check_scene(*scene.scene), std::invalid_argument) << name;
   }
 }

@@ -32,12 +32,6 @@ struct Mode {
 const Mode kModes[] = {{"vcm", 32}, {"vcm:mode=connect", 32}, {"vcm:mode=merge", 64}};
 constexpr int kTests = int(std::size(kScenes) * std::size(kModes)) * kRegionsPerSide * kRegionsPerSide;
 
-LoadedScene box(const std::string& name, const std::string& integrator) {
-  auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "24"}});
-  scene.integrator = make_integrator(integrator);
-  return scene;
-}
-
 double mean_abs_difference(const std::vector<test::RegionEstimate>& a, const std::vector<test::RegionEstimate>& b) {
   double sum = 0;
   for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].mean - b[i].mean);
@@ -53,8 +47,8 @@ TEST_P(VcmAgreement, RegionMeansMatchPath) {
   const double t_critical = test::two_sided_t_critical(test::sidak_alpha(0.01, kTests), kRuns - 1);
   for (const Mode& mode : kModes) {
     uint64_t non_finite = 0;
-    const auto estimates =
-        test::estimate_regions(box(name, mode.integrator), regions, mode.iterations, kRuns, 3000, &non_finite);
+    const auto estimates = test::estimate_regions(test::scene_with_integrator(name, mode.integrator), regions,
+                                                  mode.iterations, kRuns, 3000, &non_finite);
     EXPECT_EQ(non_finite, 0u) << name << " " << mode.integrator;
     for (size_t i = 0; i < regions.size(); ++i)
       EXPECT_LT(std::abs(test::difference_score(estimates[i], reference[i])), t_critical)
@@ -69,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, VcmAgreement, testing::ValuesIn(kScenes), test:
 TEST(Vcm, MergingBiasShrinksWithIterations) {
   const auto regions = test::grid_regions(kRes, kRes, kRegionsPerSide);
   const auto reference = test::reference_regions("cornell-box-glass", regions);
-  const auto scene = box("cornell-box-glass", "vcm:mode=merge");
+  const auto scene = test::scene_with_integrator("cornell-box-glass", "vcm:mode=merge");
   const auto early = test::estimate_regions(scene, regions, 4, kRuns, 3100);
   const auto late = test::estimate_regions(scene, regions, 64, kRuns, 3200);
   EXPECT_LT(mean_abs_difference(late, reference), mean_abs_difference(early, reference));
@@ -78,7 +72,7 @@ TEST(Vcm, MergingBiasShrinksWithIterations) {
 // Light subpaths draw from (seed, iteration, index) and their splats sum
 // exactly, so the thread count changes nothing.
 TEST(Vcm, SameImageForAnyThreadCount) {
-  const auto scene = box("cornell-box-glass", "vcm");
+  const auto scene = test::scene_with_integrator("cornell-box-glass", "vcm");
   const FilmBuffer one = test::render_scene(scene, 3, 11, 1);
   const FilmBuffer two = test::render_scene(scene, 3, 11, 2);
   EXPECT_EQ(one.resolve(), two.resolve());
@@ -102,7 +96,7 @@ TEST(Vcm, BadParameters) {
 // Media and spectral transport are refused with the integrators that
 // render them named.
 TEST(Vcm, RefusesWhatItDoesNotRenderYet) {
-  const auto fog = box("cornell-box-fog", "vcm");
+  const auto fog = test::scene_with_integrator("cornell-box-fog", "vcm");
   try {
     fog.integrator->check_scene(*fog.scene);
     FAIL() << "a scene with media was accepted";
@@ -110,7 +104,7 @@ TEST(Vcm, RefusesWhatItDoesNotRenderYet) {
     EXPECT_THAT(e.what(), HasSubstr("integrator 'vcm' does not render participating media"));
     EXPECT_THAT(e.what(), HasSubstr("bdpt"));
   }
-  const auto prism = box("cornell-box-spectral", "vcm");
+  const auto prism = test::scene_with_integrator("cornell-box-spectral", "vcm");
   try {
     prism.integrator->check_scene(*prism.scene);
     FAIL() << "a spectral scene was accepted";

@@ -39,12 +39,6 @@ constexpr int kRes = 24, kRuns = 16;
 const char* const kScenes[] = {"cornell-box-glass", "cornell-box-mirror"};
 const char* const kGatherers[] = {"photon:photons=20000", "sppm:photons=10000"};
 
-LoadedScene box(const std::string& name, const std::string& integrator) {
-  auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "24"}});
-  scene.integrator = make_integrator(integrator);
-  return scene;
-}
-
 // The pixels whose probe rays (7x7 over the pixel) meet at least two
 // shapes, none of them emitting or with a delta lobe: where walls, floor,
 // ceiling and the block meet.
@@ -72,7 +66,7 @@ class EdgeGathering : public testing::TestWithParam<const char*> {};
 
 TEST_P(EdgeGathering, PixelsWhereSurfacesMeetAgreeWithBdpt) {
   const std::string name = GetParam();
-  const auto reference_scene = box(name, "bdpt");
+  const auto reference_scene = test::scene_with_integrator(name, "bdpt");
   const auto edges = edge_pixels(*reference_scene);
   ASSERT_GE(edges.size(), 40u) << name;
   const int tests = int(std::size(kScenes) * std::size(kGatherers) * edges.size());
@@ -81,7 +75,8 @@ TEST_P(EdgeGathering, PixelsWhereSurfacesMeetAgreeWithBdpt) {
   uint64_t seed = 100;
   for (const char* gatherer : kGatherers) {
     uint64_t non_finite = 0;
-    const auto estimates = test::estimate_regions(box(name, gatherer), edges, 32, kRuns, seed += kRuns, &non_finite);
+    const auto estimates = test::estimate_regions(test::scene_with_integrator(name, gatherer), edges, 32, kRuns,
+                                                  seed += kRuns, &non_finite);
     EXPECT_EQ(non_finite, 0u);
     for (size_t i = 0; i < edges.size(); ++i)
       EXPECT_LT(std::abs(test::difference_score(estimates[i], bdpt[i])), t_critical)

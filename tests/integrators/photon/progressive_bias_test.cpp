@@ -255,15 +255,6 @@ SppmRun render_sppm(const LoadedScene& scene, int iterations, uint64_t seed) {
   return {sum / double(pixels.size()), radius * radius};
 }
 
-// The mean and its standard error of values from independent runs.
-std::pair<double, double> mean_and_error(const std::vector<double>& v) {
-  double sum = 0, sum2 = 0;
-  for (double x : v) sum += x;
-  const double mean = sum / double(v.size());
-  for (double x : v) sum2 += (x - mean) * (x - mean);
-  return {mean, std::sqrt(sum2 / double(v.size() - 1) / double(v.size()))};
-}
-
 TEST(SppmBias, ImageAndRadiusFollowTheEstimatorsDefinition) {
   const auto scene = test::scene_from_xml(scene_xml("sppm"));
   const std::vector<int> iterations = {1, 4, 16, 64};
@@ -279,8 +270,8 @@ TEST(SppmBias, ImageAndRadiusFollowTheEstimatorsDefinition) {
       means.push_back(r.mean);
       radii2.push_back(r.radius2);
     }
-    const auto [mean, mean_se] = mean_and_error(means);
-    const auto [radius2, radius2_se] = mean_and_error(radii2);
+    const auto [mean, mean_se] = test::mean_and_standard_error(means);
+    const auto [radius2, radius2_se] = test::mean_and_standard_error(radii2);
     EXPECT_LT(std::abs(mean - model[j].mean), t_critical * std::hypot(mean_se, model[j].mean_se))
         << n << " iterations: " << mean << " +- " << mean_se << ", model " << model[j].mean << " +- "
         << model[j].mean_se << " (bias " << model[j].mean - unbiased << ")";

@@ -28,12 +28,6 @@ constexpr int kRuns = 10;
 const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
                                "cornell-box-glossy", "cornell-box-fog",   "cornell-box-smoke"};
 
-LoadedScene box(const std::string& name, const std::string& integrator) {
-  auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + name + ".xml", {{"res", "24"}});
-  scene.integrator = make_integrator(integrator);
-  return scene;
-}
-
 double mean_abs_difference(const std::vector<test::RegionEstimate>& a, const std::vector<test::RegionEstimate>& b) {
   double sum = 0;
   for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].mean - b[i].mean);
@@ -47,8 +41,8 @@ TEST_P(SppmAgreement, ConvergesToBdpt) {
   const auto regions = test::grid_regions(24, 24, 6);
   const double t_critical =
       test::two_sided_t_critical(test::sidak_alpha(0.01, int(std::size(kScenes) * regions.size())), kRuns - 1);
-  const auto bdpt = test::estimate_regions(box(name, "bdpt"), regions, 32, kRuns, 40);
-  const auto sppm = box(name, "sppm:photons=10000");
+  const auto bdpt = test::estimate_regions(test::scene_with_integrator(name, "bdpt"), regions, 32, kRuns, 40);
+  const auto sppm = test::scene_with_integrator(name, "sppm:photons=10000");
   uint64_t non_finite = 0;
   const auto early = test::estimate_regions(sppm, regions, 4, kRuns, 50, &non_finite);
   const auto late = test::estimate_regions(sppm, regions, 32, kRuns, 60, &non_finite);
