@@ -34,7 +34,7 @@ from suite_config import RUN_SEED_BASE, spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ["cornell-box", "cornell-box-baffle"]
-RADIOSITY_SPP = 16
+RADIOSITY_SPP = 256
 VARIANTS = {"radiosity": "refinements=0", "radiosity adaptive": "refinements=2"}
 
 

@@ -53,6 +53,8 @@ class RadiosityEstimator final : public PixelEstimator {
 class RadiosityIntegrator final : public PixelIntegrator {
  public:
   explicit RadiosityIntegrator(const Properties& props) {
+    if (props.get_int("max_depth") != -1)
+      throw props.error("max_depth", "must be -1: radiosity solves for light of every path length");
     settings_.patch_size = props.get_float("patch_size");
     if (!(settings_.patch_size >= 0) || !std::isfinite(settings_.patch_size))
       throw props.error("patch_size", "must be positive (or 0 for a tenth of the scene's diagonal)");
@@ -73,15 +75,27 @@ class RadiosityIntegrator final : public PixelIntegrator {
 
   std::unique_ptr<PixelEstimator> estimator(const Scene& scene, uint64_t) const override {
     check_radiosity_scene(scene);
+    return std::make_unique<RadiosityEstimator>(scene, settings_for(scene), gather_);
+  }
+
+  std::string plan(const Scene& scene) const override {
+    return "radiosity: surfaces meshed into elements of at most " + std::to_string(settings_for(scene).patch_size) +
+           ", split where radiance varies up to " + std::to_string(settings_.refinements) + " times; camera rays " +
+           (gather_ > 0 ? "gather one bounce with " + std::to_string(gather_) + " rays"
+                        : "see the interpolated solution") +
+           "; no path is traced";
+  }
+
+ private:
+  RadiositySettings settings_for(const Scene& scene) const {
     RadiositySettings settings = settings_;
     if (settings.patch_size == 0) {
       const Bounds3& b = scene.bounds();
       settings.patch_size = b.empty() ? 1 : length(b.hi - b.lo) / kDefaultPatchesPerDiagonal;
     }
-    return std::make_unique<RadiosityEstimator>(scene, settings, gather_);
+    return settings;
   }
 
- private:
   RadiositySettings settings_;
   int gather_ = 0;
 };
@@ -90,7 +104,8 @@ class RadiosityIntegrator final : public PixelIntegrator {
 
 CAUSTICA_REGISTER_PLUGIN(
     RadiosityIntegrator, "integrator", "radiosity",
-    {{"patch_size", ParamType::Float, "0", "longest element edge before adaptive splitting (0: diagonal / 10)"},
+    {{"max_depth", ParamType::Integer, "-1", "accepted for the scenes that set it; only -1 (every path length)"},
+     {"patch_size", ParamType::Float, "0", "longest element edge before adaptive splitting (0: diagonal / 10)"},
      {"refinements", ParamType::Integer, "2", "times elements are split where radiance varies, 0 to 8"},
      {"refine_threshold", ParamType::Float, "0.25",
       "split where a corner differs from the element by this times the mean reflected radiance"},

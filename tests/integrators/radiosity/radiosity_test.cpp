@@ -107,6 +107,8 @@ TEST(Radiosity, RejectsBadParameters) {
   const auto error = [](const std::string& params) {
     return test::load_error("<scene version='3.0.0'><integrator type='radiosity'>" + params + "</integrator></scene>");
   };
+  EXPECT_THAT(error("<integer name='max_depth' value='5'/>"), HasSubstr("must be -1"));
+  EXPECT_EQ(error("<integer name='max_depth' value='-1'/>"), "");
   EXPECT_THAT(error("<float name='patch_size' value='-1'/>"), HasSubstr("patch_size"));
   EXPECT_THAT(error("<float name='patch_size' value='-1'/>"), HasSubstr("must be positive"));
   EXPECT_THAT(error("<integer name='refinements' value='9'/>"), HasSubstr("must be between 0 and 8"));
