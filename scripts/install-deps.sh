@@ -8,6 +8,8 @@ packages=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
   libopencolorio-dev opencolorio-tools
+  # glare's FFT convolution
+  libfftw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libpugixml-dev libtinyobjloader-dev libfmt-dev zlib1g-dev
   # .vdb grids for heterogeneous media

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/camera/pixel_angle.h"
 #include "core/cli/interrupt.h"
 #include "core/cli/number_checks.h"
 #include "core/cli/progress_display.h"
@@ -142,7 +143,8 @@ int RenderCommand::render(const RankSession* session) const {
   const auto& ldr = film.output().ldr;
   png.replace_extension(ldr && ldr->jpeg ? ".jpg" : ".png");
   // Everything that can fail on bad options fails before the render.
-  const Developer developer = develop_.make(job.scene().tone_operator, film.output().ldr);
+  const Developer developer =
+      develop_.make(job.scene().tone_operator, film.output().ldr, degrees_per_pixel(job.scene()->sensor()));
 
   std::string plan = job.plan();
   if (session) plan += (plan.empty() ? "" : "\n") + distributed_plan(job, session->size());
@@ -197,9 +199,13 @@ int RenderCommand::render(const RankSession* session) const {
   // The picture needs only the beauty: it is resolved again rather than
   // taken from a whole image of every layer.
   const FilmBuffer& beauty = result->film;
-  write_png(png, beauty.width(), beauty.height(),
-            developer.develop(Image{beauty.width(), beauty.height(), beauty.channels(), beauty.resolve()}),
-            develop_.png_bits());
+  bool glare_spread = false;
+  write_png(
+      png, beauty.width(), beauty.height(),
+      developer.develop(Image{beauty.width(), beauty.height(), beauty.channels(), beauty.resolve()}, &glare_spread),
+      develop_.png_bits());
+  if (!quiet_ && developer.glare().mode == GlareMode::Clipped && !glare_spread)
+    std::printf("glare: skipped, no pixel exceeds the display's range\n");
   const uint64_t layer_rays = job.scene()->layer_rays_traced() - layer_rays_before;
 
   if (!quiet_) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace caustica {
 
@@ -16,7 +17,7 @@ std::array<size_t, 3> beauty_channels(const Image& image) {
   return {0, 1, 2};
 }
 
-std::vector<float> Developer::develop(Image image) const {
+std::vector<float> Developer::develop(Image image, bool* glare_spread) const {
   const size_t pixels = size_t(image.width) * image.height;
   const size_t nc = image.channels.size();
   const float scale = std::exp2(op_->exposure());
@@ -31,6 +32,8 @@ std::vector<float> Developer::develop(Image image) const {
       for (size_t c = 0; c < 3; ++c)
         if (source[c] < nc) rgb[p * 3 + c] = image.pixels[p * nc + source[c]] * scale;
   }
+  const bool spread = apply_glare(rgb, image.width, image.height, glare_);
+  if (glare_spread) *glare_spread = spread;
   op_->apply(rgb);
   if (gamma_)
     for (float& v : rgb) v = std::pow(std::max(v, 0.0f), 1 / *gamma_);
@@ -44,6 +47,11 @@ std::vector<float> Developer::develop(Image image) const {
 
 std::string Developer::describe() const {
   std::string s = op_->describe() + " exposure=" + std::to_string(op_->exposure());
+  if (glare_.mode != GlareMode::None) {
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.6g", glare_.degrees_per_pixel);
+    s += std::string(" glare=") + glare_mode_name(glare_.mode) + " degrees_per_pixel=" + angle;
+  }
   if (gamma_) return s + " gamma=" + std::to_string(*gamma_);
   s += " display=" + display_.display() + " view=" + display_.view();
   if (!display_.look().empty()) s += " look=" + display_.look();

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "core/color/glare.h"
 #include "core/registry/param_spec.h"
 #include "core/registry/plugin.h"
 
@@ -21,17 +22,20 @@ class ToneOperator : public Plugin {
 
   // In place, on pixel-interleaved RGB.
   virtual void apply(std::vector<float>& rgb) const = 0;
-  // Its name and curve parameters; the exposure is the developer's to report.
-  std::string describe() const { return describe_parameters("exposure"); }
+  // Its name and curve parameters; exposure and glare are the developer's to report.
+  std::string describe() const;
   // Exposure in stops, applied before the operator (2^exposure).
   float exposure() const { return exposure_; }
   void set_exposure(float ev) { exposure_ = ev; }
+  // The glare a scene asks for, spread before the operator (the developer's to apply).
+  GlareMode glare() const { return glare_; }
 
  private:
   float exposure_;
+  GlareMode glare_;
 };
 
-// The parameters every operator accepts (exposure), for registrations.
+// The parameters every operator accepts (exposure, glare), for registrations.
 std::vector<ParamSpec> tone_operator_params(std::vector<ParamSpec> own);
 
 // Replaces NaN and negative values by 0 and +Inf by the largest float, so

@@ -1,9 +1,11 @@
 #include "core/job/render_outputs.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
+#include "core/camera/pixel_angle.h"
 #include "core/version.h"
 
 namespace caustica {
@@ -141,6 +143,12 @@ std::map<std::string, std::string> render_metadata(const RenderJob& job, const R
                                                  {"caustica:seed", std::to_string(job.settings().seed)},
                                                  {"caustica:interrupted", stats.interrupted ? "true" : "false"},
                                                  {"caustica:version", kVersion}};
+  const double pixel_angle = degrees_per_pixel(job.scene()->sensor());
+  if (pixel_angle > 0) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", pixel_angle);
+    metadata["caustica:degrees_per_pixel"] = text;
+  }
   if (!stats.summary.empty()) metadata["caustica:run"] = stats.summary;
   if (stats.ranks > 1) metadata["caustica:ranks"] = std::to_string(stats.ranks);
   if (!stats.ranges.empty()) metadata["caustica:ranges"] = stats.ranges;

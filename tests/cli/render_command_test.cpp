@@ -160,6 +160,68 @@ TEST(TonemapCommand, RedevelopsWithoutRendering) {
   EXPECT_THAT(run_caustica("tonemap /nonexistent.exr -o x.png").output, HasSubstr("nonexistent.exr"));
 }
 
+// Glare from the command line: recorded in the development settings with
+// the camera's degrees per pixel, which the EXR keeps for `tonemap`; an
+// image without that record, or a camera without a field of view, is
+// refused with what to give instead.
+TEST(TonemapCommand, Glare) {
+  const auto exr = temp_dir() / "glare.exr";
+  const test::CommandResult r = run_caustica("render " + kCornell + " -o " + exr.string() +
+                                             " --spp 1 -D res=16 --exr-format float --glare whole -q");
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in);
+  const std::string recorded = in->spec().get_string_attribute("caustica:degrees_per_pixel");
+  // The Cornell box's 39.3077-degree view over 16 pixels.
+  const double expected = 2 * std::atan(std::tan(39.3077 / 2 * M_PI / 180) / 16) * 180 / M_PI;
+  EXPECT_NEAR(std::stod(recorded), expected, 1e-4 * expected);
+  EXPECT_THAT(in->spec().get_string_attribute("caustica:develop"), HasSubstr("glare=whole degrees_per_pixel=2.55"));
+  in.reset();
+
+  const auto pixels = [](const std::filesystem::path& p) {
+    auto png = OIIO::ImageInput::open(p.string());
+    std::vector<uint8_t> data(16 * 16 * 3);
+    png->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, data.data());
+    return data;
+  };
+  const auto plain = temp_dir() / "glare-plain.png", clipped = temp_dir() / "glare-clipped.png";
+  ASSERT_EQ(run_caustica("tonemap " + exr.string() + " -o " + plain.string()).status, 0);
+  const test::CommandResult c =
+      run_caustica("tonemap " + exr.string() + " -o " + clipped.string() + " --glare clipped");
+  ASSERT_EQ(c.status, 0) << c.output;
+  EXPECT_THAT(c.output, HasSubstr("glare=clipped degrees_per_pixel=2.55"));
+  EXPECT_NE(pixels(plain), pixels(clipped));
+  EXPECT_NE(pixels(clipped), pixels(temp_dir() / "glare.png")) << "whole glare spreads the walls too";
+  const test::CommandResult dim =
+      run_caustica("tonemap " + exr.string() + " -o " + clipped.string() + " --glare clipped --exposure -20");
+  EXPECT_THAT(dim.output, HasSubstr("glare skipped, no pixel exceeds the display's range"));
+  const auto dim_plain = temp_dir() / "glare-dim.png";
+  ASSERT_EQ(run_caustica("tonemap " + exr.string() + " -o " + dim_plain.string() + " --exposure -20").status, 0);
+  EXPECT_EQ(pixels(clipped), pixels(dim_plain)) << "at -20 stops nothing is beyond the range";
+
+  const auto bare = temp_dir() / "bare.exr";
+  {
+    std::vector<float> rgb(8 * 8 * 3, 2.0f);
+    auto out = OIIO::ImageOutput::create(bare.string());
+    ASSERT_TRUE(out->open(bare.string(), OIIO::ImageSpec(8, 8, 3, OIIO::TypeDesc::FLOAT)));
+    out->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
+  }
+  EXPECT_THAT(run_caustica("tonemap " + bare.string() + " -o " + plain.string() + " --glare whole").output,
+              HasSubstr("which the image does not record: give --degrees-per-pixel"));
+  EXPECT_EQ(
+      run_caustica("tonemap " + bare.string() + " -o " + plain.string() + " --glare whole --degrees-per-pixel 0.1")
+          .status,
+      0);
+  EXPECT_NE(run_caustica("tonemap " + bare.string() + " -o " + plain.string() + " --glare bloom").status, 0);
+  EXPECT_NE(run_caustica("tonemap " + bare.string() + " -o " + plain.string() + " --glare whole --degrees-per-pixel 0")
+                .status,
+            0);
+  const auto ortho = temp_dir() / "ortho.xml";
+  std::ofstream(ortho) << "<scene version='3.0.0'><sensor type='orthographic'/></scene>";
+  EXPECT_THAT(run_caustica("render " + ortho.string() + " --spp 1 --glare whole -q").output,
+              HasSubstr("glare needs a camera with a field of view (this one's rays are parallel)"));
+}
+
 // Starts a render of `scene` at 32x32 with `args`, sends `signal` once it
 // is rendering, and returns the spp its EXR records, after checking the
 // file is a whole image marked interrupted whose every pixel holds that

@@ -124,6 +124,19 @@ TEST(SceneLoader, TonemapElementChoosesTheDevelopment) {
               HasSubstr("test.xml:3: a scene may have only one tonemap"));
 }
 
+TEST(SceneLoader, TonemapElementAsksForGlare) {
+  const auto scene = load_scene_string(
+      "<scene version='3.0.0'><tonemap type='filmic'><string name='glare' value='clipped'/></tonemap></scene>",
+      "glare.xml");
+  EXPECT_EQ(scene.tone_operator->glare(), GlareMode::Clipped);
+  EXPECT_EQ(scene.tone_operator->describe(), "filmic bias=2.000000 white=11.200000");
+  EXPECT_EQ(load_scene_string("<scene version='3.0.0'><tonemap type='none'/></scene>", "x.xml").tone_operator->glare(),
+            GlareMode::None);
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<tonemap type='none'>\n<string name='glare' value='bloom'/>"
+                               "</tonemap></scene>"),
+              HasSubstr("test.xml:3: parameter 'glare' of tonemap 'none': must be none, whole or clipped"));
+}
+
 TEST(SceneLoader, DefaultsGiveAPerspectiveCameraAndPathTracer) {
   const auto scene = load_scene_string("<scene version='3.0.0'/>", "empty.xml");
   EXPECT_EQ(scene->sensor().film()->width(), 768);

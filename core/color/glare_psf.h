@@ -1,0 +1,25 @@
+#pragma once
+
+#include "core/image/even_kernel.h"
+
+namespace caustica {
+
+// The eye's photopic point spread function of Spencer, Shirley, Zimmerman
+// and Greenberg ("Physically-based glare effects for digital images", 1995):
+// with theta the angle from the point in degrees,
+//   f0 = 2.61e6 exp(-(theta / 0.02)^2)
+//   f1 = 20.91 / (theta + 0.02)^3
+//   f2 = 72.37 / (theta + 0.02)^2
+//   psf = 0.384 f0 + 0.478 f1 + 0.138 f2,
+// per steradian (f0 and f1 each integrate to one over the plane; f2's tail
+// falls as 1 / theta^2 and its integral grows without bound).
+double glare_psf(double theta_degrees);
+
+// The PSF integrated over each pixel of a width x height image whose pixels
+// span `degrees_per_pixel` (the small-angle approximation: the view is
+// taken as flat), with offsets reaching across the whole image, then
+// normalised so the whole kernel sums to one: a pixel's light is
+// redistributed, never made or lost.
+EvenKernel glare_kernel(int width, int height, double degrees_per_pixel);
+
+}  // namespace caustica
