@@ -1,10 +1,13 @@
 #include "core/color/glare.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/color/glare_psf.h"
+#include "core/color/glare_two_scale.h"
 #include "core/image/fft_convolution.h"
 
 namespace caustica {
@@ -42,28 +45,38 @@ bool apply_glare(std::vector<float>& rgb, int width, int height, const Glare& gl
   if (glare.mode == GlareMode::None) return false;
   if (!(glare.degrees_per_pixel > 0) || !std::isfinite(glare.degrees_per_pixel))
     throw std::invalid_argument("glare needs a camera with a field of view (degrees per pixel above 0)");
-  for (float& v : rgb) v = finite_radiance(v);
-  std::vector<float> spread;
-  if (glare.mode == GlareMode::Whole) {
-    spread = std::move(rgb);
-    rgb.assign(spread.size(), 0.0f);
-  } else {
-    spread.assign(rgb.size(), 0.0f);
-    bool beyond = false;
-    for (size_t p = 0; p + 2 < rgb.size(); p += 3) {
-      const float largest = std::max({rgb[p], rgb[p + 1], rgb[p + 2]});
-      if (largest <= 1) continue;
-      beyond = true;
-      for (size_t c = p; c < p + 3; ++c) {
-        spread[c] = rgb[c] * (1 - 1 / largest);
-        rgb[c] /= largest;
-      }
-    }
-    if (!beyond) return false;
-  }
-  convolve(spread, width, height, 3, glare_kernel(width, height, glare.degrees_per_pixel));
+  const auto each_row = [&](auto&& body) {
+    tbb::parallel_for(0, height, [&](int y) {
+      for (size_t i = size_t(y) * width * 3; i < size_t(y + 1) * width * 3; ++i) body(i);
+    });
+  };
+  const auto spread_by_psf = [&](std::vector<float>& light) {
+    if (std::min(width, height) >= kGlareTwoScaleFrom)
+      spread_two_scale(light, width, height, glare.degrees_per_pixel);
+    else
+      convolve(light, width, height, 3, glare_kernel(width, height, glare.degrees_per_pixel));
+  };
+  each_row([&](size_t i) { rgb[i] = finite_radiance(rgb[i]); });
   // The transforms' rounding can leave dark pixels a hair below zero.
-  for (size_t i = 0; i < rgb.size(); ++i) rgb[i] += std::max(spread[i], 0.0f);
+  if (glare.mode == GlareMode::Whole) {
+    spread_by_psf(rgb);
+    each_row([&](size_t i) { rgb[i] = std::max(rgb[i], 0.0f); });
+    return true;
+  }
+  std::vector<float> spread(rgb.size(), 0.0f);
+  bool beyond = false;
+  for (size_t p = 0; p + 2 < rgb.size(); p += 3) {
+    const float largest = std::max({rgb[p], rgb[p + 1], rgb[p + 2]});
+    if (largest <= 1) continue;
+    beyond = true;
+    for (size_t c = p; c < p + 3; ++c) {
+      spread[c] = rgb[c] * (1 - 1 / largest);
+      rgb[c] /= largest;
+    }
+  }
+  if (!beyond) return false;
+  spread_by_psf(spread);
+  each_row([&](size_t i) { rgb[i] += std::max(spread[i], 0.0f); });
   return true;
 }
 

@@ -26,7 +26,10 @@ struct Glare {
 // In place on pixel-interleaved, scene-linear RGB. Returns false where
 // nothing was spread: mode none, or clipped with no pixel beyond the range
 // (then no transform is computed either). NaN and negative values count
-// as black, infinities as the largest finite radiance.
+// as black, infinities as the largest finite radiance. Images at least
+// kGlareTwoScaleFrom pixels on each side are spread in two scales
+// (core/color/glare_two_scale.h), smaller ones exactly.
+inline constexpr int kGlareTwoScaleFrom = 512;
 bool apply_glare(std::vector<float>& rgb, int width, int height, const Glare& glare);
 
 }  // namespace caustica

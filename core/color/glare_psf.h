@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "core/image/even_kernel.h"
 
 namespace caustica {
@@ -14,6 +16,20 @@ namespace caustica {
 // per steradian (f0 and f1 each integrate to one over the plane; f2's tail
 // falls as 1 / theta^2 and its integral grows without bound).
 double glare_psf(double theta_degrees);
+
+// The PSF integrated over the pixel at offset (dx, dy) from the point, in
+// square degrees, for |dx| < width and |dy| < height: the core's Gaussian
+// in closed form (it separates into error functions), the tails by the
+// midpoint rule on cells small beside their distance from the point.
+class PsfPixelIntegral {
+ public:
+  PsfPixelIntegral(int width, int height, double degrees_per_pixel);
+  double operator()(int dx, int dy) const;
+
+ private:
+  double d_;
+  std::vector<double> core_x_, core_y_;
+};
 
 // The PSF integrated over each pixel of a width x height image whose pixels
 // span `degrees_per_pixel` (the small-angle approximation: the view is

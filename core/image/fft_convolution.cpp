@@ -2,7 +2,9 @@
 
 #include <fftw3.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <mutex>
 #include <stdexcept>
 
@@ -66,12 +68,12 @@ class RealTransforms {
 }  // namespace
 
 void convolve(std::vector<float>& pixels, int width, int height, int channels, const EvenKernel& kernel) {
-  if (kernel.width < width || kernel.height < height)
-    throw std::invalid_argument("convolve: the kernel is smaller than the image");
   if (width <= 0 || height <= 0) return;
-  // Offsets run over (-width, width): a circular transform of at least
-  // 2 width - 1 keeps every one apart from every other.
-  const int cols = fft_length(2 * width - 1), rows = fft_length(2 * height - 1);
+  // Offsets beyond the image never pair two of its pixels.
+  const int reach_x = std::min(kernel.width, width), reach_y = std::min(kernel.height, height);
+  // A circular transform of at least width + reach - 1 keeps every offset
+  // that pairs two pixels apart from every other.
+  const int cols = fft_length(width + reach_x - 1), rows = fft_length(height + reach_y - 1);
   const size_t stride = 2 * (size_t(cols) / 2 + 1);
   const size_t half = stride / 2;
   FloatBuffer buffer(stride * size_t(rows));
@@ -79,21 +81,24 @@ void convolve(std::vector<float>& pixels, int width, int height, int channels, c
 
   // The kernel is even, so its spectrum is real: only that is kept.
   const auto circular = [](int i, int n, int extent) { return i < extent ? i : (i > n - extent ? n - i : -1); };
-  for (int y = 0; y < rows; ++y) {
-    const int dy = circular(y, rows, height);
+  tbb::parallel_for(0, rows, [&](int y) {
+    const int dy = circular(y, rows, reach_y);
     float* row = buffer.data + size_t(y) * stride;
     for (int x = 0; x < cols; ++x) {
-      const int dx = circular(x, cols, width);
+      const int dx = circular(x, cols, reach_x);
       row[x] = dx >= 0 && dy >= 0 ? float(kernel.at(dx, dy)) : 0.0f;
     }
-  }
+  });
   transforms.forward();
   std::vector<float> kernel_spectrum(half * size_t(rows));
   const float normalisation = 1.0f / (float(cols) * float(rows));
-  for (size_t i = 0; i < kernel_spectrum.size(); ++i) kernel_spectrum[i] = buffer.data[2 * i] * normalisation;
+  tbb::parallel_for(0, rows, [&](int y) {
+    for (size_t i = size_t(y) * half; i < size_t(y + 1) * half; ++i)
+      kernel_spectrum[i] = buffer.data[2 * i] * normalisation;
+  });
 
   for (int c = 0; c < channels; ++c) {
-    for (int y = 0; y < rows; ++y) {
+    tbb::parallel_for(0, rows, [&](int y) {
       float* row = buffer.data + size_t(y) * stride;
       if (y < height) {
         const float* source = pixels.data() + size_t(y) * width * channels + c;
@@ -102,18 +107,20 @@ void convolve(std::vector<float>& pixels, int width, int height, int channels, c
       } else {
         std::fill(row, row + stride, 0.0f);
       }
-    }
+    });
     transforms.forward();
-    for (size_t i = 0; i < kernel_spectrum.size(); ++i) {
-      buffer.data[2 * i] *= kernel_spectrum[i];
-      buffer.data[2 * i + 1] *= kernel_spectrum[i];
-    }
+    tbb::parallel_for(0, rows, [&](int y) {
+      for (size_t i = size_t(y) * half; i < size_t(y + 1) * half; ++i) {
+        buffer.data[2 * i] *= kernel_spectrum[i];
+        buffer.data[2 * i + 1] *= kernel_spectrum[i];
+      }
+    });
     transforms.inverse();
-    for (int y = 0; y < height; ++y) {
+    tbb::parallel_for(0, height, [&](int y) {
       const float* row = buffer.data + size_t(y) * stride;
       float* target = pixels.data() + size_t(y) * width * channels + c;
       for (int x = 0; x < width; ++x) target[size_t(x) * channels] = row[x];
-    }
+    });
   }
 }
 
