@@ -49,27 +49,32 @@ TEST(RadiosityEnclosure, FinalGatheringSeesTheSameValue) {
 }
 
 // Mean relative difference of the region means from the path reference.
-double difference_from_reference(const std::string& spec) {
+double difference_from_reference(const std::string& scene, const std::string& spec) {
   constexpr int kRes = 24, kRegionsPerSide = 6;
   const auto regions = test::grid_regions(kRes, kRes, kRegionsPerSide);
-  const auto estimate =
-      test::estimate_regions(test::scene_with_integrator("cornell-box", spec, kRes), regions, 16, 1, 1);
-  const auto reference = test::reference_regions("cornell-box", regions);
+  const auto estimate = test::estimate_regions(test::scene_with_integrator(scene, spec, kRes), regions, 16, 1, 1);
+  const auto reference = test::reference_regions(scene, regions);
   double sum = 0;
   for (size_t i = 0; i < regions.size(); ++i) sum += std::abs(estimate[i].mean - reference[i].mean) / reference[i].mean;
   return sum / double(regions.size());
 }
 
+// The diffuse Cornell scenes with stored path references: the plain box
+// and the textured floor (its checkerboard averaged per element, its bump
+// map seen only by the path reference).
 TEST(RadiosityCornellBox, ApproachesThePathReferenceAsElementsShrink) {
-  const double coarse = difference_from_reference("radiosity:patch_size=0.3,refinements=0");
-  const double medium = difference_from_reference("radiosity:patch_size=0.15,refinements=0");
-  const double fine = difference_from_reference("radiosity:patch_size=0.075,refinements=0");
-  EXPECT_LT(medium, coarse);
-  EXPECT_LT(fine, medium);
-  const double adaptive = difference_from_reference("radiosity:patch_size=0.15,refinements=2");
-  EXPECT_LT(adaptive, medium);
-  EXPECT_LT(fine, 0.05);
-  std::printf("mean relative difference from path: %.4f %.4f %.4f, adaptive %.4f\n", coarse, medium, fine, adaptive);
+  for (const char* scene : {"cornell-box", "cornell-box-textured"}) {
+    const double coarse = difference_from_reference(scene, "radiosity:patch_size=0.3,refinements=0");
+    const double medium = difference_from_reference(scene, "radiosity:patch_size=0.15,refinements=0");
+    const double fine = difference_from_reference(scene, "radiosity:patch_size=0.075,refinements=0");
+    EXPECT_LT(medium, coarse) << scene;
+    EXPECT_LT(fine, medium) << scene;
+    const double adaptive = difference_from_reference(scene, "radiosity:patch_size=0.15,refinements=2");
+    EXPECT_LT(adaptive, medium) << scene;
+    EXPECT_LT(fine, 0.05) << scene;
+    std::printf("%s: mean relative difference from path: %.4f %.4f %.4f, adaptive %.4f\n", scene, coarse, medium, fine,
+                adaptive);
+  }
 }
 
 TEST(Radiosity, SameImageForAnyThreadCount) {
