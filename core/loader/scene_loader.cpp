@@ -190,6 +190,9 @@ class Instantiator {
 
   void finish_shape(const std::shared_ptr<Shape>& shape, const Properties& props, const XmlNode& node) {
     shape->set_media(props.get_object<Medium>("interior"), props.get_object<Medium>("exterior"));
+    // Hits name a csg solid's operands, which would not know its media.
+    if (shape->kind() == "csg" && shape->bounds_media())
+      throw SceneError(node.where, "a csg shape cannot bound media: its operands' surfaces do not carry them");
     auto bsdf = props.child<Bsdf>("bsdf");
     if (!bsdf) {
       // A shape without a material is a grey diffuse one, as in Mitsuba,

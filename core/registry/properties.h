@@ -75,6 +75,14 @@ class Properties {
       if (child.category == category) out.push_back(std::dynamic_pointer_cast<T>(child.object));
     return out;
   }
+  // The same, each with where it was written.
+  template <class T>
+  std::vector<std::pair<std::shared_ptr<T>, SourceLocation>> children_at(const std::string& category) const {
+    std::vector<std::pair<std::shared_ptr<T>, SourceLocation>> out;
+    for (const auto& [child, where] : children_)
+      if (child.category == category) out.emplace_back(std::dynamic_pointer_cast<T>(child.object), where);
+    return out;
+  }
   // At most one nested object of `category`; null if there is none.
   template <class T>
   std::shared_ptr<T> child(const std::string& category) const {

@@ -97,8 +97,9 @@ constexpr const char* kNothingCallsForSpectral =
 
 // Why the scene calls for spectral transport, or "".
 std::string spectral_content(const Scene& scene, const std::vector<GivenSpectrum>& spectra) {
-  for (const auto& s : scene.shapes())
-    if (s->bsdf() && s->bsdf()->disperses()) return "a dispersive dielectric: " + s->kind();
+  for (const auto& shape : scene.shapes())
+    for (const Shape* s : shape->material_surfaces())
+      if (s->bsdf() && s->bsdf()->disperses()) return "a dispersive dielectric: " + s->kind();
   for (const GivenSpectrum& g : spectra) {
     const std::string given = g.where.str() + ": " + g.owner + " " + g.parameter + " given as a spectrum";
     if (g.owner == "bsdf" && (g.parameter == "eta" || g.parameter == "k"))
@@ -153,7 +154,11 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
   for (const auto& s : scene.shapes()) {
     if (!(s->lobes() & kDelta)) continue;
     ++specular_shapes;
-    if (!lit_specular && (met.count(s.get()) || lit_directly(scene, *s))) lit_specular = s.get();
+    // A hit names the operand of a csg solid, and its points are what the
+    // probes sample.
+    for (const Shape* surface : s->material_surfaces())
+      if (!lit_specular && (surface->lobes() & kDelta) && (met.count(surface) || lit_directly(scene, *surface)))
+        lit_specular = surface;
   }
   if (specular_shapes == 0) {
     f.caustics_reason = "no surface has a delta lobe (mirror or smooth glass)";
@@ -167,8 +172,9 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
   }
   count_media(scene, f);
   std::set<std::string> rgb_only;
-  for (const auto& s : scene.shapes())
-    if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
+  for (const auto& shape : scene.shapes())
+    for (const Shape* s : shape->material_surfaces())
+      if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
   f.rgb_only_materials.assign(rgb_only.begin(), rgb_only.end());
   decide_spectral(scene, spectra, f);
   return f;

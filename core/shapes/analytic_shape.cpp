@@ -29,7 +29,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     RTCHitN_Ng_x(hits, args->N, i) = 0;
     RTCHitN_Ng_y(hits, args->N, i) = 0;
     RTCHitN_Ng_z(hits, args->N, i) = 1;
-    RTCHitN_primID(hits, args->N, i) = args->primID;
+    RTCHitN_primID(hits, args->N, i) = hit.prim;
     RTCHitN_geomID(hits, args->N, i) = args->geomID;
     RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
   }

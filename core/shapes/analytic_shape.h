@@ -10,7 +10,8 @@ class AnalyticShape : public Shape {
  public:
   unsigned attach(RTCDevice device, RTCScene scene) const override;
 
-  // The nearest hit with t in (t_min, t_max); fills t and shape-defined uv.
+  // The nearest hit with t in (t_min, t_max); fills t and the shape-defined
+  // prim and uv that interaction() reads back.
   virtual bool intersect(const Ray& ray, RayHit& hit) const = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "core/shapes/shape.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/bsdf/bsdf.h"
 
@@ -19,6 +20,10 @@ float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
 }  // namespace
 
 uint32_t Shape::lobes() const { return bsdf_->lobes(); }
+
+void Shape::line_crossings(const Ray&, std::vector<BoundaryCrossing>&) const {
+  throw std::logic_error(kind() + " bounds no solid a line could cross");
+}
 
 bool Shape::is_null() const { return lobes() == kNull; }
 

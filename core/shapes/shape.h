@@ -4,10 +4,12 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/geometry/bounds.h"
 #include "core/geometry/interaction.h"
 #include "core/registry/plugin.h"
+#include "core/shapes/boundary_crossing.h"
 
 namespace caustica {
 
@@ -54,6 +56,15 @@ class Shape : public Plugin {
   virtual bool is_instance() const { return false; }
   // The BsdfLobe flags of what the shape reflects (an instance's are its group's).
   virtual uint32_t lobes() const;
+  // Shapes that bound a solid and cross a line analytically (a sphere, a
+  // csg solid) say so and append every crossing of the whole line
+  // o + t d, ascending in t, negative t included; csg combines them.
+  // Closed meshes are solids too, crossed by csg through Embree.
+  virtual bool encloses_solid() const { return false; }
+  // The shapes whose materials this one's surface shows, and which hits
+  // name: itself, or a csg solid's operands.
+  virtual std::vector<const Shape*> material_surfaces() const { return {this}; }
+  virtual void line_crossings(const Ray& line, std::vector<BoundaryCrossing>& out) const;
   // A null surface, which scatters nothing (a medium's index-matched
   // boundary): paths and the first-hit layers look through it.
   bool is_null() const;

@@ -6,6 +6,7 @@
 //   </shape>
 
 #include <cmath>
+#include <utility>
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
@@ -33,26 +34,23 @@ class SphereShape final : public AnalyticShape {
   }
 
   bool intersect(const Ray& ray, RayHit& hit) const override {
-    // Solved in double around the centre, with the discriminant in the
-    // numerically stable form r^2 - |oc - (oc.d) d|^2 / |d|^2, so a ray
-    // leaving the surface never finds it again at t ~ 0.
-    const double ox = double(ray.o.x) - center_.x, oy = double(ray.o.y) - center_.y, oz = double(ray.o.z) - center_.z;
-    const double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
-    const double a = dx * dx + dy * dy + dz * dz;
-    const double b = -(ox * dx + oy * dy + oz * dz);  // half of -B
-    const double px = ox + b / a * dx, py = oy + b / a * dy, pz = oz + b / a * dz;
-    const double r = radius_;
-    const double disc = a * (r * r - (px * px + py * py + pz * pz));
-    if (disc < 0) return false;
-    const double q = b + std::copysign(std::sqrt(disc), b);
-    double t0 = q / a, t1 = q == 0 ? t0 : ((ox * ox + oy * oy + oz * oz) - r * r) / q;
-    if (t0 > t1) std::swap(t0, t1);
+    double t0, t1;
+    if (!roots(ray, t0, t1)) return false;
     const double t = t0 > ray.t_min ? t0 : t1;
     if (!(t > ray.t_min) || t >= ray.t_max) return false;
     hit.t = float(t);
     hit.prim = 0;
     hit.uv = {};
     return true;
+  }
+
+  bool encloses_solid() const override { return true; }
+
+  void line_crossings(const Ray& line, std::vector<BoundaryCrossing>& out) const override {
+    double t0, t1;
+    if (!roots(line, t0, t1)) return;
+    out.push_back({t0, 0, 0, {}, true});
+    out.push_back({t1, 0, 0, {}, false});
   }
 
   SurfaceInteraction interaction(const Ray& ray, const RayHit& hit) const override {
@@ -122,6 +120,26 @@ class SphereShape final : public AnalyticShape {
                             : Vec3(kPi * radius_, 0, 0);
     si.shading = Frame::from_normal_and_tangent(normal, si.dpdu);
     return si;
+  }
+
+  // Where the line o + t d meets the sphere, t0 <= t1. Solved in double
+  // around the centre, with the discriminant in the numerically stable form
+  // r^2 - |oc - (oc.d) d|^2 / |d|^2, so a ray leaving the surface never
+  // finds it again at t ~ 0.
+  bool roots(const Ray& ray, double& t0, double& t1) const {
+    const double ox = double(ray.o.x) - center_.x, oy = double(ray.o.y) - center_.y, oz = double(ray.o.z) - center_.z;
+    const double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
+    const double a = dx * dx + dy * dy + dz * dz;
+    const double b = -(ox * dx + oy * dy + oz * dz);  // half of -B
+    const double px = ox + b / a * dx, py = oy + b / a * dy, pz = oz + b / a * dz;
+    const double r = radius_;
+    const double disc = a * (r * r - (px * px + py * py + pz * pz));
+    if (disc < 0) return false;
+    const double q = b + std::copysign(std::sqrt(disc), b);
+    t0 = q / a;
+    t1 = q == 0 ? t0 : ((ox * ox + oy * oy + oz * oz) - r * r) / q;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
   }
 
   bool flip_normals_;

@@ -38,6 +38,8 @@ class TriangleMesh : public Shape {
   PositionSample sample_position(Vec2 u) const override;
   std::string kind() const override { return kind_; }
   size_t triangle_count() const { return mesh_.indices.size() / 3; }
+  // The triangles in world space.
+  const MeshData& data() const { return mesh_; }
   // Triangles with an area in the mesh's own space and none once stored.
   size_t collapsed_triangles() const { return collapsed_; }
 

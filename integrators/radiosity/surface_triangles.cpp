@@ -67,6 +67,8 @@ void check_radiosity_scene(const Scene& scene) {
     if (!emitter->is_area())
       throw std::invalid_argument(what + "the emitter '" + emitter->plugin_name() + "' is not one" + instead);
   for (const auto& shape : scene.shapes()) {
+    if (shape->kind() == "csg")
+      throw std::invalid_argument(what + shape_name(scene, *shape) + " is a csg solid, which it cannot mesh" + instead);
     if (shape->is_instance() || shape->is_group())
       throw std::invalid_argument(what + shape_name(scene, *shape) + " is an instance, which it cannot mesh yet" +
                                   instead);

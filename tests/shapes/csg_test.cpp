@@ -1,0 +1,235 @@
+// csg: the boolean combination of crossings along a line (worked by hand),
+// the closure check of mesh operands, the volume of solids measured by
+// casting rays through the scene against their closed forms (which also
+// checks that every boundary faces out: rays alternate entering and
+// leaving), and the refusals.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/math/constants.h"
+#include "core/shapes/csg_combine.h"
+#include "core/shapes/mesh_closure.h"
+#include "tests/support/test_scenes.h"
+#include "tests/support/thrown_message.h"
+
+namespace caustica {
+namespace {
+
+using testing::HasSubstr;
+
+// An operand's crossings: inside between consecutive pairs of ts.
+std::vector<BoundaryCrossing> intervals(std::initializer_list<double> ts, uint32_t leaf) {
+  std::vector<BoundaryCrossing> out;
+  bool entering = true;
+  for (double t : ts) {
+    out.push_back({t, leaf, 0, {}, entering});
+    entering = !entering;
+  }
+  return out;
+}
+
+// (t, leaf, entering) of each crossing.
+std::vector<std::tuple<double, uint32_t, bool>> summary(const std::vector<BoundaryCrossing>& cs) {
+  std::vector<std::tuple<double, uint32_t, bool>> out;
+  for (const BoundaryCrossing& c : cs) out.emplace_back(c.t, c.leaf, c.entering);
+  return out;
+}
+
+using Expected = std::vector<std::tuple<double, uint32_t, bool>>;
+
+TEST(CsgCombine, OverlappingIntervals) {
+  const std::vector<std::vector<BoundaryCrossing>> ab = {intervals({0, 2}, 0), intervals({1, 3}, 1)};
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Union, ab)), (Expected{{0, 0, true}, {3, 1, false}}));
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Intersection, ab)), (Expected{{1, 1, true}, {2, 0, false}}));
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Difference, ab)), (Expected{{0, 0, true}, {1, 1, false}}));
+}
+
+TEST(CsgCombine, TouchingOperandsMakeNoBoundaryBetweenThem) {
+  const std::vector<std::vector<BoundaryCrossing>> ab = {intervals({0, 1}, 0), intervals({1, 2}, 1)};
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Union, ab)), (Expected{{0, 0, true}, {2, 1, false}}));
+  EXPECT_TRUE(combine_crossings(CsgOperation::Intersection, ab).empty());
+  // Where both bound the solid, the first operand's surface.
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Difference, ab)), (Expected{{0, 0, true}, {1, 0, false}}));
+  // A tangent touch, in and out at one t, leaves the state as it was.
+  const std::vector<std::vector<BoundaryCrossing>> tangent = {intervals({0, 2}, 0), intervals({1, 1}, 1)};
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Union, tangent)), (Expected{{0, 0, true}, {2, 0, false}}));
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Difference, tangent)), (Expected{{0, 0, true}, {2, 0, false}}));
+}
+
+TEST(CsgCombine, DifferenceOfSeveralAndAHoleInside) {
+  // [0, 10] less [2, 3] and [5, 12]: inside over [0, 2] and [3, 5].
+  const std::vector<std::vector<BoundaryCrossing>> ops = {intervals({0, 10}, 0), intervals({2, 3}, 1),
+                                                          intervals({5, 12}, 2)};
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Difference, ops)),
+            (Expected{{0, 0, true}, {2, 1, false}, {3, 1, true}, {5, 2, false}}));
+  // Two operands entering an intersection at once: the first one's surface.
+  const std::vector<std::vector<BoundaryCrossing>> same = {intervals({1, 4}, 0), intervals({1, 3}, 1)};
+  EXPECT_EQ(summary(combine_crossings(CsgOperation::Intersection, same)), (Expected{{1, 0, true}, {3, 1, false}}));
+}
+
+TEST(CsgCombine, ParsesTheOperationNames) {
+  CsgOperation op;
+  EXPECT_TRUE(parse_csg_operation("difference", op));
+  EXPECT_EQ(op, CsgOperation::Difference);
+  EXPECT_FALSE(parse_csg_operation("subtract", op));
+}
+
+// A unit tetrahedron, wound outward.
+std::vector<Vec3> tetrahedron() { return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; }
+
+TEST(MeshClosure, ClosedConsistentMeshesPassAndOthersSayWhy) {
+  const std::vector<uint32_t> closed = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  EXPECT_EQ(mesh_closure_problem(tetrahedron(), closed), "");
+  // The same corners repeated per face (as the cube stores them) are one vertex.
+  std::vector<Vec3> split;
+  std::vector<uint32_t> split_indices;
+  for (uint32_t i : closed) {
+    split_indices.push_back(uint32_t(split.size()));
+    split.push_back(tetrahedron()[i]);
+  }
+  EXPECT_EQ(mesh_closure_problem(split, split_indices), "");
+  EXPECT_THAT(mesh_closure_problem(tetrahedron(), {0, 2, 1, 0, 1, 3, 0, 3, 2}),
+              HasSubstr("3 of its edges belong to one triangle only (it is not closed)"));
+  EXPECT_THAT(mesh_closure_problem(tetrahedron(), {0, 1, 2, 0, 1, 3, 0, 3, 2, 1, 2, 3}),
+              HasSubstr("edges join triangles wound the same way round"));
+  EXPECT_THAT(mesh_closure_problem(tetrahedron(), {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 1, 3}),
+              HasSubstr("edges belong to more than two triangles"));
+}
+
+std::string sphere(double x, double y, double z, double r) {
+  return "<shape type='sphere'><point name='center' x='" + std::to_string(x) + "' y='" + std::to_string(y) + "' z='" +
+         std::to_string(z) + "'/><float name='radius' value='" + std::to_string(r) + "'/></shape>";
+}
+
+std::string cube(double x, double y, double z, double half, double angle = 0) {
+  return "<shape type='cube'><transform name='to_world'><scale value='" + std::to_string(half) +
+         "'/><rotate x='1' y='1' z='0' angle='" + std::to_string(angle) + "'/><translate x='" + std::to_string(x) +
+         "' y='" + std::to_string(y) + "' z='" + std::to_string(z) + "'/></transform></shape>";
+}
+
+std::string csg(const std::string& op, const std::string& operands) {
+  return "<shape type='csg'><string name='operation' value='" + op + "'/>" + operands + "</shape>";
+}
+
+// The solid's volume by rays along z through a jittered grid over
+// [-extent, extent]^2, each walked through the scene from hit to hit,
+// entering where the normal faces it and leaving where it faces away;
+// a ray that enters twice or leaves twice in a row fails the test.
+double volume_by_rays(const std::string& shape, float extent) {
+  const auto loaded = test::scene_from_xml("<scene version='3.0.0'>" + shape + "</scene>");
+  const Scene& scene = *loaded.scene;
+  constexpr int n = 200;
+  const double cell = 2.0 * extent / n;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0, 1);
+  double volume = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Vec3 d{0, 0, 1};
+      Ray ray{{-extent + float(cell) * (float(i) + u(rng)), -extent + float(cell) * (float(j) + u(rng)), -4 * extent},
+              d,
+              kInfinity};
+      bool inside = false;
+      float entered = 0;
+      for (int hits = 0; hits < 64; ++hits) {
+        const auto si = scene.intersect(ray);
+        if (!si) break;
+        const bool entering = dot(si->ng, d) < 0;
+        if (entering == inside) {
+          ADD_FAILURE() << "a ray " << (entering ? "entered" : "left") << " twice at z " << si->p.z;
+          return 0;
+        }
+        inside = entering;
+        if (entering)
+          entered = si->p.z;
+        else
+          volume += double(si->p.z - entered) * cell * cell;
+        ray = si->spawn(d);
+      }
+      EXPECT_FALSE(inside);
+    }
+  return volume;
+}
+
+// Two spheres of radius r whose centres lie d apart share a lens of
+// volume pi (4 r + d) (2 r - d)^2 / 12.
+double lens_volume(double r, double d) { return kPi * (4 * r + d) * (2 * r - d) * (2 * r - d) / 12; }
+
+TEST(CsgVolume, LensUnionAndDifferencesMatchTheirClosedForms) {
+  const double ball = 4 * kPi / 3;
+  const double lens = lens_volume(1, 1);
+  EXPECT_NEAR(volume_by_rays(csg("intersection", sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1)), 1.1f) / lens, 1, 3e-3);
+  EXPECT_NEAR(volume_by_rays(csg("union", sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1)), 1.1f) / (2 * ball - lens), 1, 3e-3);
+  // A cube (half side 0.4, turned 30 degrees) hollowed out of a ball.
+  EXPECT_NEAR(volume_by_rays(csg("difference", sphere(0, 0, 0, 1) + cube(0, 0, 0, 0.4, 30)), 1.1f) / (ball - 0.512), 1,
+              3e-3);
+  // Nested: the union of two balls less a cube at their waist, less a
+  // third ball outside them (no change).
+  EXPECT_NEAR(volume_by_rays(csg("difference", csg("union", sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1)) +
+                                                   cube(0, 0, 0.5, 0.3) + sphere(3, 0, 0, 0.5)),
+                             1.1f) /
+                  (2 * ball - lens - 0.216),
+              1, 3e-3);
+}
+
+TEST(CsgShape, RefusesWhatIsNoSolidAndWhatItCannotDo) {
+  const auto error = [](const std::string& shape) {
+    return test::load_error("<scene version='3.0.0'>\n" + shape + "\n</scene>");
+  };
+  EXPECT_THAT(error(csg("xor", sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1))),
+              HasSubstr("must be union, intersection or difference, not 'xor'"));
+  EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1))),
+              HasSubstr("a csg shape needs two or more shapes inside it, not 1"));
+  EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1) + "<shape type='disk'/>")),
+              HasSubstr("a csg operand must bound a solid (a sphere, a cube, a closed mesh or a csg), not a disk"));
+  EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1) + "<shape type='rectangle'/>")),
+              HasSubstr("this rectangle does not: 4 of its edges belong to one triangle only (it is not closed)"));
+  EXPECT_THAT(error("<shape type='csg'>" + sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1) +
+                    "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape>"),
+              HasSubstr("a csg shape cannot emit"));
+  EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1) +
+                                     "<shape type='sphere'><emitter type='area'><rgb name='radiance' value='1'/>"
+                                     "</emitter></shape>")),
+              HasSubstr("test.xml:2: a csg operand cannot emit"));
+  EXPECT_THAT(error("<medium type='homogeneous' id='fog'/><shape type='csg'>" + sphere(0, 0, 0, 1) +
+                    sphere(0, 0, 1, 1) + "<ref name='interior' id='fog'/></shape>"),
+              HasSubstr("a csg shape cannot bound media"));
+}
+
+// A glass lens made by csg, lit from above over a diffuse floor: the scene
+// analysis finds the light reaching its operands' delta surfaces (hits
+// name the operands), and radiosity refuses it.
+TEST(CsgShape, ItsOperandsMaterialsCountInTheSceneAnalysis) {
+  const std::string glass_sphere_a =
+      "<shape type='sphere'><point name='center' z='0'/><bsdf type='dielectric'/></shape>";
+  const std::string glass_sphere_b =
+      "<shape type='sphere'><point name='center' z='1'/><bsdf type='dielectric'/></shape>";
+  const std::string scene = "<scene version='3.0.0'>" + csg("intersection", glass_sphere_a + glass_sphere_b) +
+                            "<shape type='rectangle'><transform name='to_world'><scale value='5'/><translate "
+                            "z='-2'/></transform></shape>"
+                            "<shape type='rectangle'><transform name='to_world'><rotate x='1' angle='180'/><translate "
+                            "z='4'/></transform><emitter type='area'><rgb name='radiance' value='1'/></emitter></shape>"
+                            "</scene>";
+  const auto loaded = test::scene_from_xml(scene);
+  EXPECT_TRUE(loaded.scene->features().caustic_paths) << loaded.scene->features().caustics_reason;
+  EXPECT_THAT(loaded.scene->features().caustics_reason, HasSubstr("sphere"));
+  const auto radiosity = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='radiosity'/>" + csg("union", sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1)) +
+      "<shape type='rectangle'><emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>");
+  EXPECT_THAT(test::thrown_message<std::exception>([&] { test::render_scene(radiosity, 1); }),
+              HasSubstr("is a csg solid, which it cannot mesh"));
+}
+
+// The shipped scene loads and renders, every pixel finite.
+TEST(CsgShape, TheShippedSceneRenders) {
+  const auto loaded = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-csg.xml", {{"res", "16"}});
+  const std::vector<float> pixels = test::render_scene(loaded, 4).resolve();
+  for (const float v : pixels) ASSERT_TRUE(std::isfinite(v));
+}
+
+}  // namespace
+}  // namespace caustica
