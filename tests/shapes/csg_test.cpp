@@ -356,6 +356,57 @@ TEST(CsgShape, ALensFocusesWhereTheThickLensEquationSays) {
   }
 }
 
+// Silhouettes against images the test computes: black solids before a
+// white environment, seen by an orthographic camera along -z over
+// [-1.2, 1.2]^2, so each pixel shows 1 less the share of it the solid
+// covers. The share is the test's own point-in-outline predicate averaged
+// over 64 x 64 points of the pixel; the render's 256 samples a pixel
+// estimate it with a binomial standard error, and each pixel must lie
+// within five of them (plus the 64 x 64 grid's own 1/64).
+TEST(CsgShape, SilhouettesMatchTheirOutlines) {
+  const std::string black = "<bsdf type='diffuse'><rgb name='reflectance' value='0'/></bsdf>";
+  struct Case {
+    std::string solid;
+    std::function<bool(double, double)> covers;
+  };
+  const Case cases[] = {
+      // A lens whose axis lies along x: the outline of two discs' overlap.
+      {csg("intersection", sphere(-0.5, 0, 0, 1, black) + sphere(0.5, 0, 0, 1, black)),
+       [](double x, double y) { return (x + 0.5) * (x + 0.5) + y * y < 1 && (x - 0.5) * (x - 0.5) + y * y < 1; }},
+      // A ball less the cube [0, 1]^2 x [-0.5, 0.5]: seen along z, the ball
+      // is gone only where it is thinner than the cube, x^2 + y^2 > 3/4.
+      {csg("difference", sphere(0, 0, 0, 1, black) + cube(0.5, 0.5, 0, 0.5, 0, black)), [](double x, double y) {
+         const bool cut = x > 0 && x < 1 && y > 0 && y < 1 && x * x + y * y > 0.75;
+         return x * x + y * y < 1 && !cut;
+       }}};
+  constexpr int kRes = 32, kSpp = 256, kGrid = 64;
+  for (const Case& c : cases) {
+    const std::string xml =
+        "<scene version='3.0.0'><integrator type='path'/><sensor type='orthographic'>"
+        "<transform name='to_world'><scale value='1.2'/><lookat origin='0, 0, 5' target='0, 0, 0' "
+        "up='0, 1, 0'/></transform><film type='hdrfilm'><integer name='width' value='32'/>"
+        "<integer name='height' value='32'/><rfilter type='box'/></film></sensor>"
+        "<emitter type='constant'><rgb name='radiance' value='1'/></emitter>" +
+        c.solid + "</scene>";
+    const std::vector<float> pixels = test::render_scene(test::scene_from_xml(xml), kSpp).resolve();
+    for (int py = 0; py < kRes; ++py)
+      for (int px = 0; px < kRes; ++px) {
+        int covered = 0;
+        for (int j = 0; j < kGrid; ++j)
+          for (int i = 0; i < kGrid; ++i) {
+            // Image left is world -x and image top +y.
+            const double x = -1.2 + 2.4 * (px + (i + 0.5) / kGrid) / kRes;
+            const double y = 1.2 - 2.4 * (py + (j + 0.5) / kGrid) / kRes;
+            covered += c.covers(x, y);
+          }
+        const double share = double(covered) / (kGrid * kGrid);
+        const double error = std::sqrt(share * (1 - share) / kSpp);
+        ASSERT_NEAR(1 - pixels[(size_t(py) * kRes + px) * 3], share, 5 * error + 1.0 / kGrid)
+            << c.solid << " pixel " << px << ", " << py;
+      }
+  }
+}
+
 // The shipped scene loads and renders, every pixel finite.
 TEST(CsgShape, TheShippedSceneRenders) {
   const auto loaded = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-csg.xml", {{"res", "16"}});
