@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "core/errors/scene_error.h"
-#include "core/lights/emitter.h"
 #include "core/registry/properties.h"
 #include "core/shapes/mesh_closure.h"
 #include "core/shapes/mesh_crossings.h"
@@ -30,7 +29,7 @@ CsgShape::CsgShape(const Properties& props) {
   if (children.size() < 2)
     throw SceneError(props.where(),
                      "a csg shape needs two or more shapes inside it, not " + std::to_string(children.size()));
-  if (props.child<Emitter>("emitter"))
+  if (!props.children_at<Plugin>("emitter").empty())
     throw SceneError(props.where(),
                      "a csg shape cannot emit (its boundary is not sampled by area): put the "
                      "emitter on a shape of its own");
@@ -55,7 +54,7 @@ CsgShape::CsgShape(const Properties& props) {
       leaves_.push_back(shape.get());
     } else {
       throw SceneError(where,
-                       "a csg operand must bound a solid (a sphere, a cube, a closed mesh or a csg), "
+                       "a csg operand must bound a solid (a sphere, a cylinder, a cube, a closed mesh or a csg), "
                        "not a " +
                            shape->kind());
     }

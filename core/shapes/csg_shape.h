@@ -13,9 +13,9 @@ class Properties;
 class TriangleMesh;
 
 // csg: a solid made of two or more solids by union, intersection or
-// difference (the first less all the others), each a sphere, a closed
-// triangle mesh (cube, obj, ply, serialized) or another csg, nested to any
-// depth. A ray meets the solid where the operands' crossings of its line,
+// difference (the first less all the others), each a sphere, a cylinder
+// (with its ends), a closed triangle mesh (cube, obj, ply, serialized) or
+// another csg, nested to any depth. A ray meets the solid where the operands' crossings of its line,
 // combined, change inside to outside; the surface there is the operand's
 // (its material, uv and shading), with the normal turned to the solid's
 // outside, so the part of a subtracted operand that bounds a difference

@@ -6,12 +6,14 @@
 //   </shape>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
 #include "core/shapes/analytic_shape.h"
+#include "core/shapes/similarity.h"
 
 namespace caustica {
 namespace {
@@ -22,15 +24,10 @@ class SphereShape final : public AnalyticShape {
     const Transform to_world = props.get_transform("to_world");
     const float radius = props.get_float("radius");
     if (!(radius > 0)) throw props.error("radius", "must be positive");
-    const Vec3 sx = to_world.vector({1, 0, 0}), sy = to_world.vector({0, 1, 0}), sz = to_world.vector({0, 0, 1});
-    const float scale = length(sx);
-    const float tolerance = 1e-4f * scale;
-    if (std::abs(length(sy) - scale) > tolerance || std::abs(length(sz) - scale) > tolerance ||
-        std::abs(dot(sx, sy)) > tolerance * scale || std::abs(dot(sx, sz)) > tolerance * scale ||
-        std::abs(dot(sy, sz)) > tolerance * scale)
-      throw props.error("to_world", "a sphere's to_world may only translate, rotate and scale uniformly");
+    const std::optional<float> scale = similarity_scale(to_world);
+    if (!scale) throw props.error("to_world", "a sphere's to_world may only translate, rotate and scale uniformly");
     center_ = to_world.point(props.get_point("center"));
-    radius_ = radius * scale;
+    radius_ = radius * *scale;
   }
 
   bool intersect(const Ray& ray, RayHit& hit) const override {

@@ -113,6 +113,15 @@ std::string cube(double x, double y, double z, double half, double angle = 0, co
          "' y='" + std::to_string(y) + "' z='" + std::to_string(z) + "'/></transform>" + material + "</shape>";
 }
 
+std::string cylinder(Vec3 p0, Vec3 p1, double r, const std::string& material = "") {
+  const auto point = [](const char* name, Vec3 p) {
+    return std::string("<point name='") + name + "' x='" + std::to_string(p.x) + "' y='" + std::to_string(p.y) +
+           "' z='" + std::to_string(p.z) + "'/>";
+  };
+  return "<shape type='cylinder'>" + point("p0", p0) + point("p1", p1) + "<float name='radius' value='" +
+         std::to_string(r) + "'/>" + material + "</shape>";
+}
+
 std::string csg(const std::string& op, const std::string& operands) {
   return "<shape type='csg'><string name='operation' value='" + op + "'/>" + operands + "</shape>";
 }
@@ -239,6 +248,26 @@ TEST(CsgVolume, RandomNestedSolidsMatchTheirPointCount) {
   }
 }
 
+// A cylinder operand is the solid between its ends: a capsule (a cylinder
+// with a ball on one end), a tilted cylinder less a thinner coaxial one
+// that runs out of both ends (a tube's wall), and a cylinder whose axis
+// lies along the rays (crossed only through its ends; the ball it is
+// joined with lies outside the rays' reach).
+TEST(CsgVolume, CylindersAreSolidsWithTheirEnds) {
+  const double r = 0.4;
+  EXPECT_NEAR(volume_by_rays(csg("union", cylinder({0, 0, -0.5f}, {0, 0, 0.5f}, r) + sphere(0, 0, 0.5, r)), 1.1f) /
+                  (kPi * r * r + 2 * kPi * r * r * r / 3),
+              1, 3e-3);
+  const Vec3 p0{-0.5f, -0.3f, -0.2f}, p1{0.4f, 0.3f, 0.3f}, axis = (p1 - p0) * 0.5f;
+  EXPECT_NEAR(volume_by_rays(csg("difference", cylinder(p0, p1, 0.4) + cylinder(p0 - axis, p1 + axis, 0.2)), 1.1f) /
+                  (kPi * (0.16 - 0.04) * double(length(p1 - p0))),
+              1, 3e-3);
+  EXPECT_NEAR(
+      volume_by_rays(csg("union", cylinder({0.1f, 0, -0.7f}, {0.1f, 0, 0.4f}, 0.5) + sphere(3, 3, 3, 0.1)), 1.1f) /
+          (kPi * 0.25 * 1.1),
+      1, 3e-3);
+}
+
 TEST(CsgShape, RefusesWhatIsNoSolidAndWhatItCannotDo) {
   const auto error = [](const std::string& shape) {
     return test::load_error("<scene version='3.0.0'>\n" + shape + "\n</scene>");
@@ -247,8 +276,9 @@ TEST(CsgShape, RefusesWhatIsNoSolidAndWhatItCannotDo) {
               HasSubstr("must be union, intersection or difference, not 'xor'"));
   EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1))),
               HasSubstr("a csg shape needs two or more shapes inside it, not 1"));
-  EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1) + "<shape type='disk'/>")),
-              HasSubstr("a csg operand must bound a solid (a sphere, a cube, a closed mesh or a csg), not a disk"));
+  EXPECT_THAT(
+      error(csg("union", sphere(0, 0, 0, 1) + "<shape type='disk'/>")),
+      HasSubstr("a csg operand must bound a solid (a sphere, a cylinder, a cube, a closed mesh or a csg), not a disk"));
   EXPECT_THAT(error(csg("union", sphere(0, 0, 0, 1) + "<shape type='rectangle'/>")),
               HasSubstr("this rectangle does not: 4 of its edges belong to one triangle only (it is not closed)"));
   EXPECT_THAT(error("<shape type='csg'>" + sphere(0, 0, 0, 1) + sphere(0, 0, 1, 1) +
@@ -299,7 +329,9 @@ TEST(CsgShape, GlassSolidsInAWhiteFurnaceStayWhite) {
   const std::string solids[] = {
       csg("intersection", sphere(0, 0, 0, 1, g) + sphere(0, 0, 1, 1, g)),
       csg("difference", sphere(0, 0, 0.5, 1, g) + cube(0.6, 0.3, 0.2, 0.5, 30, g)),
-      csg("union", csg("difference", sphere(0, 0, 0, 1, g) + sphere(0, 0, 1, 0.6, g)) + cube(0, 0, -0.8, 0.4, 45, g))};
+      csg("union", csg("difference", sphere(0, 0, 0, 1, g) + sphere(0, 0, 1, 0.6, g)) + cube(0, 0, -0.8, 0.4, 45, g)),
+      csg("difference", cylinder({-0.2f, -0.5f, 0}, {0.3f, 0.6f, 0.5f}, 0.7, g) +
+                            cylinder({-0.7f, -1.5f, -0.5f}, {0.8f, 1.6f, 1}, 0.3, g))};
   for (const std::string& solid : solids) {
     const std::string xml =
         "<scene version='3.0.0'><integrator type='path'/>"
