@@ -20,6 +20,8 @@ packages=(
   clang libclang-rt-14-dev
   # bench/: the convergence suite reads EXRs and plots from Python
   python3 python3-numpy python3-matplotlib python3-openimageio
+  # the Python module (python/) and its tests
+  pybind11-dev python3-dev python3-pytest
 )
 
 missing=()

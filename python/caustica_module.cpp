@@ -1,0 +1,129 @@
+// The Python module `caustica`: load a scene, render it as the command line
+// does (the same job, so the same numbers bit for bit), and get the layers
+// of the EXR the command line would write as numpy arrays, with its
+// metadata as a dict.
+//
+//   import caustica
+//   scene = caustica.load("scenes/cornell-box.xml", defines={"res": "64"})
+//   result = caustica.render(scene, spp=16, seed=1)
+//   result.beauty            # H x W x 3 float32
+//   result.layers["variance"]
+//   result.metadata["caustica:integrator"]
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <map>
+#include <string>
+
+#include "core/errors/scene_error.h"
+#include "core/job/render_job.h"
+#include "core/job/render_outputs.h"
+#include "core/loader/scene_loader.h"
+
+namespace py = pybind11;
+
+namespace caustica {
+namespace {
+
+// A loaded scene and the name its renders record.
+struct PyScene {
+  LoadedScene loaded;
+  std::string name;
+};
+
+struct PyResult {
+  py::array_t<float> beauty;
+  py::dict layers;
+  py::dict metadata;
+};
+
+// The image's channels grouped as the EXR's layers: "R", "G", "B" make
+// the beauty; "variance.R" ... the layer "variance", each H x W x channels.
+void split_layers(const Image& image, PyResult& out) {
+  std::map<std::string, std::vector<size_t>> groups;
+  std::vector<std::string> order;
+  for (size_t c = 0; c < image.channels.size(); ++c) {
+    const std::string& name = image.channels[c];
+    const size_t dot = name.rfind('.');
+    const std::string layer = dot == std::string::npos ? "" : name.substr(0, dot);
+    if (!groups.count(layer)) order.push_back(layer);
+    groups[layer].push_back(c);
+  }
+  const size_t n = image.channels.size(), pixels = size_t(image.width) * image.height;
+  for (const std::string& layer : order) {
+    const std::vector<size_t>& channels = groups[layer];
+    py::array_t<float> array({size_t(image.height), size_t(image.width), channels.size()});
+    float* data = array.mutable_data();
+    for (size_t p = 0; p < pixels; ++p)
+      for (size_t k = 0; k < channels.size(); ++k) data[p * channels.size() + k] = image.pixels[p * n + channels[k]];
+    if (layer.empty())
+      out.beauty = array;
+    else
+      out.layers[py::str(layer)] = array;
+  }
+}
+
+PyScene load_file(const std::filesystem::path& path, const Defines& defines) {
+  return {load_scene(path, defines), path.string()};
+}
+
+PyScene load_text(const std::string& xml, const Defines& defines, const std::string& name) {
+  return {load_scene_string(xml, name, defines), name};
+}
+
+PyResult render_scene(const PyScene& scene, const std::string& integrator, uint32_t spp, uint64_t first_sample,
+                      double time, uint64_t seed, int threads, const std::string& spectral, bool raw_sums) {
+  RenderSettings settings;
+  settings.integrator = integrator;
+  settings.spp = spp;
+  settings.first_sample = first_sample;
+  settings.time_limit = time;
+  settings.seed = seed;
+  settings.threads = threads;
+  if (spectral == "on")
+    settings.transport = RenderSettings::Transport::Spectral;
+  else if (spectral == "off")
+    settings.transport = RenderSettings::Transport::Rgb;
+  else if (spectral != "auto")
+    throw py::value_error("spectral must be 'on', 'off' or 'auto', not '" + spectral + "'");
+  Image image;
+  std::map<std::string, std::string> metadata;
+  {
+    py::gil_scoped_release released;
+    const RenderJob job(scene.loaded, settings);
+    const RenderResult result = job.run();
+    const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
+    image = RenderLayers(result.film, first_hit ? &*first_hit : nullptr, result.stats.variance_known, raw_sums).image();
+    metadata = render_metadata(job, result, scene.name, raw_sums);
+  }
+  PyResult out;
+  split_layers(image, out);
+  for (const auto& [key, value] : metadata) out.metadata[py::str(key)] = value;
+  return out;
+}
+
+}  // namespace
+}  // namespace caustica
+
+PYBIND11_MODULE(caustica, m) {
+  using namespace caustica;
+  m.doc() = "caustica: a physically based Monte Carlo renderer";
+  // A scene's errors carry its file and line in their message.
+  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  py::class_<PyScene>(m, "Scene").def_readonly("name", &PyScene::name);
+  py::class_<PyResult>(m, "Result")
+      .def_readonly("beauty", &PyResult::beauty)
+      .def_readonly("layers", &PyResult::layers)
+      .def_readonly("metadata", &PyResult::metadata);
+  m.def("load", &load_file, py::arg("path"), py::arg("defines") = Defines{},
+        "Loads a scene file; defines are the command line's -D name=value.");
+  m.def("load_string", &load_text, py::arg("xml"), py::arg("defines") = Defines{}, py::arg("name") = "string.xml",
+        "Loads a scene from XML text; name stands for the file in messages.");
+  m.def("render", &render_scene, py::arg("scene"), py::kw_only(), py::arg("integrator") = "", py::arg("spp") = 0,
+        py::arg("first_sample") = 0, py::arg("time") = 0.0, py::arg("seed") = 0, py::arg("threads") = 0,
+        py::arg("spectral") = "auto", py::arg("raw_sums") = false,
+        "Renders as `caustica render` does; returns beauty, layers and metadata.");
+}

@@ -1,0 +1,71 @@
+"""The Python module against the command line: the same render, bit for
+bit, as arrays; the layers and metadata the EXR holds; errors as Python
+exceptions with the command line's messages."""
+
+import os
+import subprocess
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import OpenImageIO as oiio
+import pytest
+
+import caustica
+
+ROOT = Path(__file__).resolve().parents[2]
+BOX = ROOT / "scenes" / "cornell-box.xml"
+
+
+def read_exr(path):
+    image = oiio.ImageBuf(str(path))
+    names = list(image.spec().channelnames)
+    return names, image.get_pixels(oiio.FLOAT)
+
+
+def test_render_equals_the_command_line_bit_for_bit():
+    scene = caustica.load(BOX, defines={"res": "12"})
+    result = caustica.render(scene, spp=3, seed=5, threads=2)
+    assert result.beauty.shape == (12, 12, 3) and result.beauty.dtype == np.float32
+    with tempfile.TemporaryDirectory() as tmp:
+        exr = Path(tmp) / "box.exr"
+        subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", str(exr), "--spp", "3",
+                        "--seed", "5", "--threads", "1", "--exr-format", "float", "-D", "res=12", "--quiet"],
+                       check=True)
+        names, pixels = read_exr(exr)
+    rgb = [names.index(c) for c in ("R", "G", "B")]
+    assert np.array_equal(pixels[:, :, rgb], result.beauty)
+    variance = [names.index("variance." + c) for c in ("R", "G", "B")]
+    assert np.array_equal(pixels[:, :, variance], result.layers["variance"])
+    assert result.beauty.mean() > 0
+
+
+def test_metadata_and_integrator_choice():
+    # Files the text names resolve beside `name`.
+    scene = caustica.load_string(BOX.read_text(), defines={"res": "8"}, name=str(ROOT / "scenes" / "text.xml"))
+    result = caustica.render(scene, integrator="bdpt:max_depth=3", spp=2, first_sample=4, seed=1)
+    assert result.metadata["caustica:integrator"].startswith("bdpt max_depth=3")
+    assert result.metadata["caustica:first_sample"] == "4"
+    assert result.metadata["caustica:spp"] == "2"
+    assert "caustica:plan" in result.metadata
+
+
+def test_errors_carry_the_command_lines_messages():
+    bad = "<scene version='3.0.0'>\n<shape type='sphere'><float name='radius' value='-1'/></shape>\n</scene>"
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "bad.xml"
+        path.write_text(bad)
+        cli = subprocess.run([os.environ["CAUSTICA_BINARY"], "info", str(path)], capture_output=True, text=True)
+        assert cli.returncode != 0
+        with pytest.raises(caustica.SceneError) as raised:
+            caustica.load(path)
+        assert str(raised.value) == f"{path}:2: parameter 'radius' of shape 'sphere': must be positive"
+        assert str(raised.value) in cli.stderr
+        with pytest.raises(caustica.SceneError, match="bad.xml:2: parameter 'radius'"):
+            caustica.load_string(bad, name="bad.xml")
+    with pytest.raises(caustica.SceneError, match="cannot open scene file"):
+        caustica.load(ROOT / "no-such-scene.xml")
+    with pytest.raises(ValueError, match="spectral must be 'on', 'off' or 'auto'"):
+        caustica.render(caustica.load(BOX, defines={"res": "4"}), spp=1, spectral="sometimes")
+    with pytest.raises(TypeError):
+        caustica.render("not a scene", spp=1)
