@@ -1,7 +1,8 @@
 // The Python module `caustica`: load a scene, render it as the command line
 // does (the same job, so the same numbers bit for bit), and get the layers
 // of the EXR the command line would write as numpy arrays, with its
-// metadata as a dict.
+// metadata as a dict; compare renders and develop them for display as
+// `caustica compare` and `caustica tonemap` do.
 //
 //   import caustica
 //   scene = caustica.load("scenes/cornell-box.xml", defines={"res": "64"})
@@ -18,7 +19,11 @@
 #include <map>
 #include <string>
 
+#include "core/camera/pixel_angle.h"
 #include "core/errors/scene_error.h"
+#include "core/image/image_input.h"
+#include "core/image/image_metrics.h"
+#include "core/job/develop_settings.h"
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
 #include "core/loader/scene_loader.h"
@@ -38,6 +43,11 @@ struct PyResult {
   py::array_t<float> beauty;
   py::dict layers;
   py::dict metadata;
+  // What develop() and compare() read: every layer as the EXR holds them,
+  // the scene's own tone operator, the camera's degrees per pixel.
+  std::shared_ptr<const Image> image;
+  std::shared_ptr<ToneOperator> scene_tonemap;
+  double degrees_per_pixel = 0;
 };
 
 // The image's channels grouped as the EXR's layers: "R", "G", "B" make
@@ -100,8 +110,61 @@ PyResult render_scene(const PyScene& scene, const std::string& integrator, uint3
     metadata = render_metadata(job, result, scene.name, raw_sums);
   }
   PyResult out;
+  out.scene_tonemap = scene.loaded.tone_operator;
+  out.degrees_per_pixel = degrees_per_pixel(scene.loaded.scene->sensor());
   split_layers(image, out);
   for (const auto& [key, value] : metadata) out.metadata[py::str(key)] = value;
+  out.image = std::make_shared<const Image>(std::move(image));
+  return out;
+}
+
+// A render's layers: a result's, or an EXR's read from its path.
+std::shared_ptr<const Image> image_of(const py::object& source) {
+  if (py::isinstance<PyResult>(source)) return source.cast<const PyResult&>().image;
+  return std::make_shared<const Image>(read_image(source.cast<std::filesystem::path>()));
+}
+
+py::dict compare(const py::object& image, const py::object& reference, double epsilon) {
+  const ErrorMetrics m = compare_images(*image_of(image), *image_of(reference), epsilon);
+  py::dict out;
+  out["mse"] = m.mse;
+  out["mse_corrected"] = m.mse_corrected;
+  out["rel_mse"] = m.rel_mse;
+  out["rel_mse_corrected"] = m.rel_mse_corrected;
+  out["mae"] = m.mae;
+  return out;
+}
+
+// The display-encoded H x W x 3 image `caustica tonemap` would write to a
+// 16-bit PNG, before quantisation: from a result (its scene's tone
+// operator and camera by default) or an H x W x 3 scene-linear array.
+py::array_t<float> develop(const py::object& source, const DevelopSettings& settings) {
+  Image image;
+  std::shared_ptr<ToneOperator> scene_default;
+  std::optional<double> pixel_angle;
+  if (py::isinstance<PyResult>(source)) {
+    const PyResult& result = source.cast<const PyResult&>();
+    image = *result.image;
+    scene_default = result.scene_tonemap;
+    pixel_angle = result.degrees_per_pixel;
+  } else {
+    const auto array = source.cast<py::array_t<float, py::array::c_style | py::array::forcecast>>();
+    if (array.ndim() != 3 || array.shape(2) != 3)
+      throw py::value_error("develop takes a result or an H x W x 3 array of scene-linear RGB");
+    image = {int(array.shape(1)),
+             int(array.shape(0)),
+             {"R", "G", "B"},
+             std::vector<float>(array.data(), array.data() + array.size())};
+  }
+  const Developer developer = make_developer(settings, scene_default, std::nullopt, pixel_angle);
+  const size_t width = size_t(image.width), height = size_t(image.height);
+  std::vector<float> display;
+  {
+    py::gil_scoped_release released;
+    display = developer.develop(std::move(image));
+  }
+  py::array_t<float> out({height, width, size_t(3)});
+  std::copy(display.begin(), display.end(), out.mutable_data());
   return out;
 }
 
@@ -126,4 +189,17 @@ PYBIND11_MODULE(caustica, m) {
         py::arg("first_sample") = 0, py::arg("time") = 0.0, py::arg("seed") = 0, py::arg("threads") = 0,
         py::arg("spectral") = "auto", py::arg("raw_sums") = false,
         "Renders as `caustica render` does; returns beauty, layers and metadata.");
+  m.def("compare", &compare, py::arg("image"), py::arg("reference"), py::arg("epsilon") = kRelMseEpsilon,
+        "Errors of a render (a result or an EXR path) against a reference, as `caustica compare` reports them.");
+  m.def(
+      "develop",
+      [](const py::object& source, const std::string& tonemap, std::optional<float> exposure,
+         std::optional<std::string> glare, std::optional<double> degrees_per_pixel, const std::string& display,
+         const std::string& view, const std::string& look, const std::string& ocio_config) {
+        return develop(source, {tonemap, display, view, look, ocio_config, exposure, glare, degrees_per_pixel});
+      },
+      py::arg("image"), py::kw_only(), py::arg("tonemap") = "", py::arg("exposure") = py::none(),
+      py::arg("glare") = py::none(), py::arg("degrees_per_pixel") = py::none(), py::arg("display") = "",
+      py::arg("view") = "", py::arg("look") = "", py::arg("ocio_config") = "",
+      "Develops a result or a scene-linear H x W x 3 array for display, as `caustica tonemap` does.");
 }

@@ -69,3 +69,45 @@ def test_errors_carry_the_command_lines_messages():
         caustica.render(caustica.load(BOX, defines={"res": "4"}), spp=1, spectral="sometimes")
     with pytest.raises(TypeError):
         caustica.render("not a scene", spp=1)
+
+
+def test_compare_reports_the_squared_error_of_the_beauty():
+    scene = caustica.load(BOX, defines={"res": "8"})
+    a = caustica.render(scene, spp=4, seed=1)
+    b = caustica.render(scene, spp=4, seed=2)
+    assert caustica.compare(a, a)["mse"] == 0
+    diff = a.beauty.astype(np.float64) - b.beauty.astype(np.float64)
+    errors = caustica.compare(a, b)
+    assert errors["mse"] == pytest.approx(np.mean(diff ** 2), rel=1e-9)
+    assert errors["mae"] == pytest.approx(np.mean(np.abs(diff)), rel=1e-9)
+    rel = diff ** 2 / (b.beauty.astype(np.float64) ** 2 + 1e-2)
+    assert errors["rel_mse"] == pytest.approx(np.mean(rel), rel=1e-9)
+    with tempfile.TemporaryDirectory() as tmp:
+        exr = Path(tmp) / "b.exr"
+        subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", str(exr), "--spp", "4", "--seed", "2",
+                        "--exr-format", "float", "-D", "res=8", "--quiet"], check=True)
+        assert caustica.compare(a, str(exr))["mse"] == errors["mse"]
+
+
+def test_develop_equals_the_tonemap_commands_png():
+    scene = caustica.load(BOX, defines={"res": "8"})
+    result = caustica.render(scene, spp=4, seed=1)
+    with tempfile.TemporaryDirectory() as tmp:
+        exr, png = Path(tmp) / "box.exr", Path(tmp) / "box.png"
+        subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", str(exr), "--spp", "4", "--seed", "1",
+                        "--exr-format", "float", "-D", "res=8", "--quiet"], check=True)
+        for options, kwargs in (([], {}), (["--tonemap", "reinhard", "--exposure", "1"],
+                                           {"tonemap": "reinhard", "exposure": 1.0})):
+            subprocess.run([os.environ["CAUSTICA_BINARY"], "tonemap", str(exr), "-o", str(png), "--png-bits", "16"]
+                           + options, check=True)
+            written = oiio.ImageBuf(str(png)).get_pixels(oiio.FLOAT)[:, :, :3]
+            developed = caustica.develop(result, **kwargs)
+            assert developed.shape == (8, 8, 3)
+            # The PNG holds 16-bit steps.
+            assert np.max(np.abs(developed - written)) <= 0.5 / 65535 + 1e-7
+        from_array = caustica.develop(result.beauty, tonemap="none")
+        assert np.array_equal(from_array, caustica.develop(result, tonemap="none"))
+    with pytest.raises(ValueError, match="unknown tone operator 'sepia'"):
+        caustica.develop(result, tonemap="sepia")
+    with pytest.raises(ValueError, match="H x W x 3"):
+        caustica.develop(np.zeros((4, 4)))
