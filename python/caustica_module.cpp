@@ -16,8 +16,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
+#include <chrono>
+#include <exception>
 #include <map>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "core/camera/pixel_angle.h"
 #include "core/errors/scene_error.h"
@@ -99,16 +104,43 @@ PyResult render_scene(const PyScene& scene, const std::string& integrator, uint3
     settings.transport = RenderSettings::Transport::Rgb;
   else if (spectral != "auto")
     throw py::value_error("spectral must be 'on', 'off' or 'auto', not '" + spectral + "'");
+  std::atomic<bool> stop{false};
+  settings.stop = &stop;
   Image image;
   std::map<std::string, std::string> metadata;
+  std::exception_ptr failure;
+  std::optional<py::error_already_set> interrupt;
   {
+    // The render runs beside this thread, which keeps looking for Python's
+    // signals: Ctrl-C stops the render at its next pass and raises
+    // KeyboardInterrupt here once it has.
     py::gil_scoped_release released;
-    const RenderJob job(scene.loaded, settings);
-    const RenderResult result = job.run();
-    const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
-    image = RenderLayers(result.film, first_hit ? &*first_hit : nullptr, result.stats.variance_known, raw_sums).image();
-    metadata = render_metadata(job, result, scene.name, raw_sums);
+    std::atomic<bool> done{false};
+    std::thread worker([&] {
+      try {
+        const RenderJob job(scene.loaded, settings);
+        const RenderResult result = job.run();
+        const std::optional<FirstHitLayers> first_hit = job.first_hit_layers(result);
+        image =
+            RenderLayers(result.film, first_hit ? &*first_hit : nullptr, result.stats.variance_known, raw_sums).image();
+        metadata = render_metadata(job, result, scene.name, raw_sums);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      done = true;
+    });
+    while (!done) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      py::gil_scoped_acquire held;
+      if (!interrupt && PyErr_CheckSignals() != 0) {
+        interrupt.emplace();
+        stop = true;
+      }
+    }
+    worker.join();
   }
+  if (interrupt) throw *interrupt;
+  if (failure) std::rethrow_exception(failure);
   PyResult out;
   out.scene_tonemap = scene.loaded.tone_operator;
   out.degrees_per_pixel = degrees_per_pixel(scene.loaded.scene->sensor());

@@ -3,8 +3,10 @@ bit, as arrays; the layers and metadata the EXR holds; errors as Python
 exceptions with the command line's messages."""
 
 import os
+import signal
 import subprocess
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -111,3 +113,23 @@ def test_develop_equals_the_tonemap_commands_png():
         caustica.develop(result, tonemap="sepia")
     with pytest.raises(ValueError, match="H x W x 3"):
         caustica.develop(np.zeros((4, 4)))
+
+
+def test_ctrl_c_stops_a_render_and_raises_keyboard_interrupt():
+    script = (f"import caustica, sys\n"
+              f"scene = caustica.load({str(BOX)!r}, defines={{'res': '64'}})\n"
+              f"print('rendering', flush=True)\n"
+              f"caustica.render(scene, spp=1000000, threads=1)\n"
+              f"print('finished', flush=True)\n")
+    child = subprocess.Popen(["/usr/bin/python3", "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=os.environ)
+    try:
+        assert child.stdout.readline().strip() == "rendering"
+        time.sleep(1)
+        child.send_signal(signal.SIGINT)
+        # Without the stop the render would run for hours.
+        out, err = child.communicate(timeout=60)
+    finally:
+        child.kill()
+    assert "KeyboardInterrupt" in err
+    assert "finished" not in out
