@@ -188,6 +188,16 @@ py::array_t<float> develop(const py::object& source, const DevelopSettings& sett
              {"R", "G", "B"},
              std::vector<float>(array.data(), array.data() + array.size())};
   }
+  // An exposure given here replaces the operator's own, which the scene
+  // shares with every result: it is put back once the image is developed.
+  const float scene_exposure = scene_default ? scene_default->exposure() : 0;
+  struct RestoreExposure {
+    ToneOperator* op;
+    float ev;
+    ~RestoreExposure() {
+      if (op) op->set_exposure(ev);
+    }
+  } restore{scene_default.get(), scene_exposure};
   const Developer developer = make_developer(settings, scene_default, std::nullopt, pixel_angle);
   const size_t width = size_t(image.width), height = size_t(image.height);
   std::vector<float> display;
