@@ -10,6 +10,7 @@
 //   result.beauty            # H x W x 3 float32
 //   result.layers["variance"]
 //   result.metadata["caustica:integrator"]
+//   caustica.merge([result, caustica.read("other.exr")]).write("both.exr")
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -18,17 +19,22 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <map>
 #include <optional>
 #include <string>
 #include <thread>
 
-#include "core/camera/pixel_angle.h"
 #include "core/errors/scene_error.h"
 #include "core/image/image_input.h"
 #include "core/image/image_metrics.h"
+#include "core/image/image_output.h"
+#include "core/image/render_merge.h"
 #include "core/job/develop_settings.h"
+#include "core/job/merge_parts.h"
+#include "core/job/range_merge.h"
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
 #include "core/loader/scene_loader.h"
@@ -48,11 +54,13 @@ struct PyResult {
   py::array_t<float> beauty;
   py::dict layers;
   py::dict metadata;
-  // What develop() and compare() read: every layer as the EXR holds them,
-  // the scene's own tone operator, the camera's degrees per pixel.
+  // What develop(), compare(), merge() and write() read: every layer as the
+  // EXR holds them with its metadata, the scene's own tone operator (none
+  // for a render read from a file), the camera's degrees per pixel.
   std::shared_ptr<const Image> image;
+  std::map<std::string, std::string> metadata_text;
   std::shared_ptr<ToneOperator> scene_tonemap;
-  double degrees_per_pixel = 0;
+  std::optional<double> degrees_per_pixel;
 };
 
 // The image's channels grouped as the EXR's layers: "R", "G", "B" make
@@ -79,6 +87,28 @@ void split_layers(const Image& image, PyResult& out) {
     else
       out.layers[py::str(layer)] = array;
   }
+}
+
+// The degrees per pixel a render records, if it records a usable one.
+std::optional<double> recorded_degrees_per_pixel(const std::map<std::string, std::string>& metadata) {
+  const auto angle = metadata.find("caustica:degrees_per_pixel");
+  if (angle == metadata.end()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(angle->second.c_str(), &end);
+  if (end == angle->second.c_str() || *end != '\0' || !(value > 0) || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+PyResult make_result(Image image, std::map<std::string, std::string> metadata,
+                     std::shared_ptr<ToneOperator> scene_tonemap) {
+  PyResult out;
+  split_layers(image, out);
+  for (const auto& [key, value] : metadata) out.metadata[py::str(key)] = value;
+  out.degrees_per_pixel = recorded_degrees_per_pixel(metadata);
+  out.image = std::make_shared<const Image>(std::move(image));
+  out.metadata_text = std::move(metadata);
+  out.scene_tonemap = std::move(scene_tonemap);
+  return out;
 }
 
 PyScene load_file(const std::filesystem::path& path, const Defines& defines) {
@@ -141,19 +171,60 @@ PyResult render_scene(const PyScene& scene, const std::string& integrator, uint3
   }
   if (interrupt) throw *interrupt;
   if (failure) std::rethrow_exception(failure);
-  PyResult out;
-  out.scene_tonemap = scene.loaded.tone_operator;
-  out.degrees_per_pixel = degrees_per_pixel(scene.loaded.scene->sensor());
-  split_layers(image, out);
-  for (const auto& [key, value] : metadata) out.metadata[py::str(key)] = value;
-  out.image = std::make_shared<const Image>(std::move(image));
-  return out;
+  return make_result(std::move(image), std::move(metadata), scene.loaded.tone_operator);
+}
+
+PyResult read_result(const std::filesystem::path& path) {
+  RenderFile file = read_render(path.string());
+  return make_result(std::move(file.image), std::move(file.metadata), nullptr);
+}
+
+void write_result(const PyResult& result, const std::filesystem::path& path, const std::string& exr_format) {
+  if (path.extension() != ".exr") throw py::value_error("output must end in .exr: " + path.string());
+  if (exr_format != "half" && exr_format != "float")
+    throw py::value_error("exr_format must be 'half' or 'float', not '" + exr_format + "'");
+  py::gil_scoped_release released;
+  // As the command line: raw sums stay exact, and values beyond half's
+  // range stay finite, in float.
+  const bool half = exr_format == "half" && !has_raw_sums({path.string(), *result.image, result.metadata_text}) &&
+                    count_extreme_values(rows_of(*result.image)).beyond_half == 0;
+  write_exr(path.string(), *result.image, result.metadata_text, half);
+}
+
+// An EXR path as Python gives one (str or os.PathLike); anything else is
+// refused naming what `what` takes.
+std::filesystem::path path_of(const py::object& source, const char* what) {
+  if (!py::isinstance<py::str>(source) && !py::hasattr(source, "__fspath__"))
+    throw py::type_error(std::string(what) + " takes results or EXR paths, not " +
+                         std::string(py::str(source.get_type().attr("__name__"))));
+  return source.cast<std::filesystem::path>();
+}
+
+// Parts as `caustica merge` merges them: results, or EXR paths; a result
+// is named in messages by its place in the list.
+PyResult merge(const std::vector<py::object>& sources) {
+  std::vector<RenderFile> parts;
+  for (size_t i = 0; i < sources.size(); ++i) {
+    if (py::isinstance<PyResult>(sources[i])) {
+      const PyResult& result = sources[i].cast<const PyResult&>();
+      parts.push_back({"result " + std::to_string(i), *result.image, result.metadata_text});
+    } else {
+      parts.push_back(read_render(path_of(sources[i], "merge").string()));
+    }
+  }
+  if (parts.empty()) throw py::value_error("merge takes at least one render");
+  RenderFile merged;
+  {
+    py::gil_scoped_release released;
+    merged = merge_parts(std::move(parts));
+  }
+  return make_result(std::move(merged.image), std::move(merged.metadata), nullptr);
 }
 
 // A render's layers: a result's, or an EXR's read from its path.
 std::shared_ptr<const Image> image_of(const py::object& source) {
   if (py::isinstance<PyResult>(source)) return source.cast<const PyResult&>().image;
-  return std::make_shared<const Image>(read_image(source.cast<std::filesystem::path>()));
+  return std::make_shared<const Image>(read_image(path_of(source, "compare")));
 }
 
 py::dict compare(const py::object& image, const py::object& reference, double epsilon) {
@@ -222,7 +293,10 @@ PYBIND11_MODULE(caustica, m) {
   py::class_<PyResult>(m, "Result")
       .def_readonly("beauty", &PyResult::beauty)
       .def_readonly("layers", &PyResult::layers)
-      .def_readonly("metadata", &PyResult::metadata);
+      .def_readonly("metadata", &PyResult::metadata)
+      .def("write", &write_result, py::arg("path"), py::arg("exr_format") = "float",
+           "Writes the render's EXR (every layer, the metadata) as `caustica render` does, atomically; "
+           "in float where half would lose raw sums or values beyond 65504.");
   m.def("load", &load_file, py::arg("path"), py::arg("defines") = Defines{},
         "Loads a scene file; defines are the command line's -D name=value.");
   m.def("load_string", &load_text, py::arg("xml"), py::arg("defines") = Defines{}, py::arg("name") = "string.xml",
@@ -231,6 +305,10 @@ PYBIND11_MODULE(caustica, m) {
         py::arg("first_sample") = 0, py::arg("time") = 0.0, py::arg("seed") = 0, py::arg("threads") = 0,
         py::arg("spectral") = "auto", py::arg("raw_sums") = false,
         "Renders as `caustica render` does; returns beauty, layers and metadata.");
+  m.def("read", &read_result, py::arg("path"), "Reads a render's EXR as a result.");
+  m.def("merge", &merge, py::arg("parts"),
+        "Merges renders (results or EXR paths) as `caustica merge` does: disjoint sample ranges of one seed "
+        "with raw sums exactly, independent renders by sample count.");
   m.def("compare", &compare, py::arg("image"), py::arg("reference"), py::arg("epsilon") = kRelMseEpsilon,
         "Errors of a render (a result or an EXR path) against a reference, as `caustica compare` reports them.");
   m.def(

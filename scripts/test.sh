@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 ctest --test-dir build --output-on-failure --timeout 1200 -j "$(nproc)"
-scripts/fuzz.sh 20 1
+scripts/fuzz.sh 15 1

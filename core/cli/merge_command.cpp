@@ -5,20 +5,10 @@
 
 #include "core/image/image_metrics.h"
 #include "core/image/render_merge.h"
+#include "core/job/merge_parts.h"
 #include "core/job/range_merge.h"
 
 namespace caustica {
-
-namespace {
-
-// Nine significant digits: errors are tiny numbers.
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", value);
-  return text;
-}
-
-}  // namespace
 
 void MergeCommand::add_to(CLI::App& app) {
   command_ = app.add_subcommand("merge",
@@ -35,29 +25,19 @@ int MergeCommand::run() const {
     throw std::invalid_argument("output must end in .exr: " + output_);
   std::vector<RenderFile> parts;
   for (const std::string& path : inputs_) parts.push_back(read_render(path));
-  // Renders of one seed hold disjoint ranges of the same samples: their raw
-  // sums add up exactly. Otherwise they are independent estimates.
-  bool ranges = true;
-  for (const RenderFile& part : parts)
-    ranges = ranges && has_raw_sums(part) && render_seeds(part) == render_seeds(parts.front());
-  if (!ranges)
-    for (RenderFile& part : parts) part = without_raw_sums(std::move(part));
-  RenderFile merged = ranges ? merge_sample_ranges(parts) : merge_renders(parts);
-  // A reference carries its own error, so comparisons can discount it.
-  const EstimatedError error = estimated_error(merged.image);
-  if (error.known) {
-    merged.metadata["caustica:estimated_mse"] = number_text(error.mse);
-    merged.metadata["caustica:estimated_rel_mse"] = number_text(error.rel_mse);
-  }
-  bool half = exr_format_ == "half" && !ranges;
+  const RenderFile merged = merge_parts(std::move(parts));
+  // Raw sums must stay exact, so a merge of sample ranges is written in float.
+  bool half = exr_format_ == "half" && !has_raw_sums(merged);
   if (const size_t n = count_extreme_values(rows_of(merged.image)).beyond_half; half && n > 0) {
     half = false;
     std::fprintf(stderr, "caustica: note: %zu values exceed 65504, the largest half float: %s is written in float\n", n,
                  output_.c_str());
   }
   write_exr(output_, merged.image, merged.metadata, half);
-  std::printf("%zu renders, %s spp -> %s", parts.size(), merged.metadata["caustica:spp"].c_str(), output_.c_str());
-  if (error.known) std::printf(", estimated MSE %.4g, relative MSE %.4g", error.mse, error.rel_mse);
+  std::printf("%zu renders, %s spp -> %s", inputs_.size(), metadata_value(merged, "caustica:spp").c_str(),
+              output_.c_str());
+  if (const EstimatedError error = estimated_error(merged.image); error.known)
+    std::printf(", estimated MSE %.4g, relative MSE %.4g", error.mse, error.rel_mse);
   std::printf("\n");
   return 0;
 }
