@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "core/cli/compare_command.h"
 #include "core/cli/info_command.h"
@@ -10,10 +11,20 @@
 #include "core/cli/plugins_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/tonemap_command.h"
+#include "core/color/display_transform.h"
+#include "core/color/rgb_spectrum_table.h"
 #include "core/errors/interrupted.h"
+#include "core/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"caustica: a physically based Monte Carlo renderer"};
+  // The version, and where this binary finds its data: an installed one
+  // in its prefix's share/caustica, one in the build tree beside the build.
+  app.set_version_flag("--version", [] {
+    return std::string("caustica ") + caustica::kVersion +
+           "\nRGB-to-spectrum table: " + caustica::RgbSpectrumTable::built_path().string() +
+           "\nOCIO config: " + caustica::default_ocio_config().string();
+  });
   app.require_subcommand(1);
   caustica::RenderCommand render;
   render.add_to(app);

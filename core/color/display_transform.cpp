@@ -5,13 +5,15 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/install/data_files.h"
+
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace caustica {
 
 std::filesystem::path default_ocio_config() {
   if (const char* env = std::getenv("OCIO"); env && *env) return env;
-  return CAUSTICA_OCIO_CONFIG;
+  return data_file("config.ocio", CAUSTICA_OCIO_CONFIG);
 }
 
 DisplayTransform::DisplayTransform(const std::filesystem::path& config_path, const std::string& display,

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/color/rgb_spectrum_fit.h"
+#include "core/install/data_files.h"
 
 namespace caustica {
 
@@ -137,8 +138,12 @@ RgbSpectrumTable RgbSpectrumTable::read(const std::filesystem::path& file) {
   return table;
 }
 
+std::filesystem::path RgbSpectrumTable::built_path() {
+  return data_file("rgb_spectrum_table.bin", CAUSTICA_RGB_SPECTRUM_TABLE);
+}
+
 const RgbSpectrumTable& RgbSpectrumTable::built() {
-  static const RgbSpectrumTable table = read(CAUSTICA_RGB_SPECTRUM_TABLE);
+  static const RgbSpectrumTable table = read(built_path());
   return table;
 }
 

@@ -33,6 +33,8 @@ class RgbSpectrumTable {
 
   // The table this build made.
   static const RgbSpectrumTable& built();
+  // Where built() reads it from (see data_file).
+  static std::filesystem::path built_path();
 
   // The spectrum of reflectance rgb, each channel clamped to [0, 1]. Greys
   // (and black) get their flat spectrum exactly.
