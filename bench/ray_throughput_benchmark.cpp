@@ -101,7 +101,7 @@ const Recording& recording(const std::string& name) {
   static std::map<std::string, Recording> cache;
   auto [it, fresh] = cache.try_emplace(name);
   if (fresh) {
-    // The independent sampler, as the figures in README were measured with
+    // The independent sampler, as the figures in docs/performance.md were measured with
     // it (the scenes' own ldsampler costs about 8 % more a sample).
     it->second.scene = load_scene(scene_file(name),
                                   {{"res", std::to_string(kRes)}, {"integrator", "path"}, {"sampler", "independent"}});

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the whole test suite with AddressSanitizer and
 # UndefinedBehaviorSanitizer (clang, in build-sanitize/ apart from the fuzz
-# targets) and runs it. Too slow for the test command on two cores; README
+# targets) and runs it. Too slow for the test command on two cores; docs/reliability.md
 # gives its last result.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,4 @@
-// caustica: the command line. See README.md for the commands.
+// caustica: the command line. See docs/user-guide.md for the commands.
 
 #include <CLI/CLI.hpp>
 #include <cstdio>

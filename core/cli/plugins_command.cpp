@@ -7,7 +7,7 @@
 namespace caustica {
 
 void PluginsCommand::add_to(CLI::App& app) {
-  command_ = app.add_subcommand("plugins", "list every plugin's parameters (Markdown, as in README)");
+  command_ = app.add_subcommand("plugins", "list every plugin's parameters (Markdown, as in docs/plugins.md)");
 }
 
 int PluginsCommand::run() const {

@@ -5,7 +5,7 @@
 namespace caustica {
 
 // `caustica plugins`: every plugin's parameters as Markdown tables, the
-// text of README's parameter section.
+// text of docs/plugins.md.
 class PluginsCommand {
  public:
   void add_to(CLI::App& app);

@@ -18,7 +18,7 @@
 // (camera subpaths still meet roulette only below rr_threshold). Every
 // connection a vertex would have made is work, so shorter light subpaths
 // cost less a sample for somewhat more noise: relMSE x time 0.48 to 0.95
-// of rr_depth 5's on the Cornell boxes measured (README). `mis` picks the
+// of rr_depth 5's on the Cornell boxes measured (docs/performance.md). `mis` picks the
 // heuristic: power (exponent 2) or balance. With strategy_layers = n
 // (at most 12) the output also holds, for every path length k = 1 .. n
 // segments and each of its k + 1 strategies (s, t) with s + t - 1 = k, the

@@ -31,7 +31,7 @@
 // photons carry about equal power and none is traced on for the little it
 // still carries. At equal passes that cost up to 1.5x the relative MSE
 // (less in fog) and saved 25 to 38 % of the time: relMSE x time 0.65 to
-// 1.01 on the Cornell boxes measured (README).
+// 1.01 on the Cornell boxes measured (docs/performance.md).
 //
 //   <integrator type="sppm"><integer name="photons" value="200000"/></integrator>
 

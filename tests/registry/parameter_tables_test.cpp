@@ -1,4 +1,4 @@
-// README's parameter tables are the declarations' own, and every plugin's
+// docs/plugins.md's parameter tables are the declarations' own, and every plugin's
 // metadata string follows its declarations.
 
 #include "core/registry/parameter_tables.h"
@@ -15,18 +15,18 @@ namespace caustica {
 namespace {
 
 std::string readme_section() {
-  std::ifstream in(std::string(CAUSTICA_SOURCE_DIR) + "/README.md");
+  std::ifstream in(std::string(CAUSTICA_SOURCE_DIR) + "/docs/plugins.md");
   std::stringstream text;
   text << in.rdbuf();
   const std::string s = text.str(), begin = "<!-- parameters: begin -->\n", end = "<!-- parameters: end -->";
   const size_t b = s.find(begin), e = s.find(end);
-  if (b == std::string::npos || e == std::string::npos || e < b) return "(README.md has no parameter markers)";
+  if (b == std::string::npos || e == std::string::npos || e < b) return "(docs/plugins.md has no parameter markers)";
   return s.substr(b + begin.size(), e - b - begin.size());
 }
 
 TEST(ParameterTables, ReadmeHoldsTheDeclarations) {
   EXPECT_EQ(readme_section(), parameter_tables_markdown())
-      << "README.md's parameter tables differ from the declarations: run scripts/update-readme-parameters.sh";
+      << "docs/plugins.md's parameter tables differ from the declarations: run scripts/update-plugin-reference.sh";
 }
 
 TEST(ParameterTables, EveryDeclaredParameterHasATypeDefaultOrRequiredAndADescription) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Rewrites README.md's parameter tables (between its parameter markers) from
+# Rewrites docs/plugins.md's parameter tables (between its parameter markers) from
 # the plugins' declarations, as `caustica plugins` prints them. The test
 # `registry` fails until this has been run after a declaration changed.
 set -euo pipefail
@@ -9,7 +9,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 import subprocess, sys
 root = sys.argv[1]
 tables = subprocess.run([root + "/build/caustica", "plugins"], check=True, capture_output=True, text=True).stdout
-path = root + "/README.md"
+path = root + "/docs/plugins.md"
 text = open(path).read()
 begin, end = "<!-- parameters: begin -->\n", "<!-- parameters: end -->"
 head, rest = text.split(begin, 1)
