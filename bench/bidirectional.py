@@ -25,7 +25,7 @@ import sys
 from pathlib import Path
 
 import convergence
-from caustica_cli import Caustica
+from caustica_inprocess import runner
 from plots import plot_convergence
 from reference import make_reference
 from suite_config import spp_ladder
@@ -97,8 +97,8 @@ def main():
     parser.add_argument("--bootstrap", type=int, default=100000, help="mlt's bootstrap states per path length")
     args = parser.parse_args()
     out = args.out
-    caustica = Caustica(args.caustica, 1)
-    reference_runner = Caustica(args.caustica, os.cpu_count() or 1)
+    caustica = runner(args.caustica, 1)
+    reference_runner = runner(args.caustica, os.cpu_count() or 1)
     rows = []
     for scene in args.scenes.split(","):
         scene_path = scene_file(scene, out)

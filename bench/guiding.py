@@ -22,7 +22,8 @@ import sys
 from pathlib import Path
 
 import convergence
-from caustica_cli import Caustica, read_metadata
+from caustica_cli import read_metadata
+from caustica_inprocess import runner
 from reference import make_reference
 from suite_config import spp_ladder
 
@@ -102,8 +103,8 @@ def main():
     parser.add_argument("--scenes", default=",".join(SCENES))
     args = parser.parse_args()
     out = args.out
-    caustica = Caustica(args.caustica, 1)
-    reference_runner = Caustica(args.caustica, os.cpu_count() or 1)
+    caustica = runner(args.caustica, 1)
+    reference_runner = runner(args.caustica, os.cpu_count() or 1)
     rows, guiding_runs = [], []
     for scene in args.scenes.split(","):
         scene_path = ROOT / "scenes" / f"{scene}.xml"

@@ -27,7 +27,7 @@ import sys
 from pathlib import Path
 
 import convergence
-from caustica_cli import Caustica
+from caustica_inprocess import runner
 from plots import plot_convergence
 from reference import make_reference
 from suite_config import RUN_SEED_BASE, spp_ladder
@@ -96,8 +96,8 @@ def main():
     args = parser.parse_args()
     out = args.out
     patches = [float(p) for p in args.patches.split(",")]
-    caustica = Caustica(args.caustica, 1)
-    reference_runner = Caustica(args.caustica, os.cpu_count() or 1)
+    caustica = runner(args.caustica, 1)
+    reference_runner = runner(args.caustica, os.cpu_count() or 1)
     rows, scenes = [], {}
     for scene in args.scenes.split(","):
         scene_path = ROOT / "scenes" / f"{scene}.xml"

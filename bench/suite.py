@@ -31,7 +31,7 @@ import convergence
 import plots
 import summary
 import variance
-from caustica_cli import Caustica
+from caustica_inprocess import runner
 from reference import make_reference
 from suite_config import INTEGRATORS, REFERENCE_INTEGRATOR, SAMPLERS, SCALES, TWIN_SEED_BASE, runs, spp_ladder
 
@@ -133,7 +133,7 @@ def main():
     print(f"caustica bench, scale {args.scale}: {scenes} x {integrators} at {spp_ladder(scale.max_spp)} spp, "
           f"{scale.res}x{scale.res} pixels -> {out}")
 
-    caustica = Caustica(args.caustica, args.threads)
+    caustica = runner(args.caustica, args.threads)
     rows, skipped = run_scenes(caustica, scenes, integrators, scale, out)
     if not rows:
         sys.exit("caustica bench: no integrator ran")

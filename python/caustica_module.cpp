@@ -235,6 +235,13 @@ py::dict compare(const py::object& image, const py::object& reference, double ep
   out["rel_mse"] = m.rel_mse;
   out["rel_mse_corrected"] = m.rel_mse_corrected;
   out["mae"] = m.mae;
+  // Each image's estimate of its own error, from its variance layers; NaN
+  // where it has none.
+  const auto known = [](const EstimatedError& e, double v) { return e.known ? v : std::nan(""); };
+  out["reference_estimated_mse"] = known(m.reference, m.reference.mse);
+  out["reference_estimated_rel_mse"] = known(m.reference, m.reference.rel_mse);
+  out["estimated_mse"] = known(m.image, m.image.mse);
+  out["estimated_rel_mse"] = known(m.image, m.image.rel_mse);
   return out;
 }
 

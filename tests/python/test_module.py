@@ -84,6 +84,10 @@ def test_compare_reports_the_squared_error_of_the_beauty():
     assert errors["mae"] == pytest.approx(np.mean(np.abs(diff)), rel=1e-9)
     rel = diff ** 2 / (b.beauty.astype(np.float64) ** 2 + 1e-2)
     assert errors["rel_mse"] == pytest.approx(np.mean(rel), rel=1e-9)
+    # The reference's own estimated error: its mean pixel variance.
+    variance = b.layers["variance"].astype(np.float64)
+    assert errors["reference_estimated_mse"] == pytest.approx(np.mean(variance), rel=1e-6)
+    assert errors["mse_corrected"] == pytest.approx(errors["mse"] - errors["reference_estimated_mse"], rel=1e-9)
     with tempfile.TemporaryDirectory() as tmp:
         exr = Path(tmp) / "b.exr"
         subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", str(exr), "--spp", "4", "--seed", "2",
