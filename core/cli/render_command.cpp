@@ -37,7 +37,7 @@ void RenderCommand::add_to(CLI::App& app) {
                      "--first-sample ranges gives exactly the image of one render");
   command_->add_option("--integrator", integrator_, "replace the scene's integrator: NAME or NAME:param=value,...");
   command_->add_option("-D", defines_, "define a scene parameter: -D name=value")->allow_extra_args(false);
-  command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+  command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::Range(0, kMaxThreads));
   command_->add_option("--seed", seed_, "random seed");
   command_->add_option("--exr-format", exr_format_, "half or float (default: the film's component_format)")
       ->check(CLI::IsMember({"half", "float"}));

@@ -1,5 +1,9 @@
 #include "core/job/render_job.h"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace caustica {
 
 RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
@@ -7,6 +11,14 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
       settings_(std::move(settings)),
       integrator_(settings_.integrator.empty() ? scene_.integrator
                                                : make_integrator(settings_.integrator, scene_.integrator_values)) {
+  // What the command line's option checks refuse, refused here for every
+  // other caller (Python, the library) in the command line's words.
+  if (settings_.threads < 0 || settings_.threads > kMaxThreads)
+    throw std::invalid_argument("threads: Value " + std::to_string(settings_.threads) + " not in range 0 to " +
+                                std::to_string(kMaxThreads));
+  if (!(settings_.time_limit >= 0) || !std::isfinite(settings_.time_limit))
+    throw std::invalid_argument("time: must be a finite number of seconds, not " +
+                                std::to_string(settings_.time_limit));
   if (settings_.transport != RenderSettings::Transport::AsTheSceneNeeds) {
     SceneFeatures f = scene_->features();
     force_spectral(f, settings_.transport == RenderSettings::Transport::Spectral);

@@ -15,6 +15,9 @@
 namespace caustica {
 
 // How a scene is rendered: everything that is not the scene itself.
+// The most worker threads a render takes.
+inline constexpr int kMaxThreads = 1024;
+
 struct RenderSettings {
   // NAME or NAME:param=value,... to replace the scene's integrator; the
   // scene's integrator parameters that NAME shares stay unless named.

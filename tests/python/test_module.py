@@ -73,6 +73,22 @@ def test_errors_carry_the_command_lines_messages():
         caustica.render("not a scene", spp=1)
 
 
+@pytest.mark.parametrize("option, kwargs", [
+    (["--integrator", "path:no_such=1"], {"integrator": "path:no_such=1"}),
+    (["--integrator", "nosuch"], {"integrator": "nosuch"}),
+    (["--threads", "5000"], {"threads": 5000}),
+])
+def test_bad_render_options_raise_the_command_lines_message(option, kwargs):
+    cli = subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", "/dev/null/x.exr", "--spp", "1",
+                          "-D", "res=4", "--quiet", *option], capture_output=True, text=True)
+    assert cli.returncode != 0
+    with pytest.raises(ValueError) as raised:
+        caustica.render(caustica.load(BOX, defines={"res": "4"}), spp=1, **kwargs)
+    # The command line names its option with dashes and a capital V is CLI11's.
+    message = str(raised.value)
+    assert message.replace("threads:", "--threads:") in cli.stderr, (message, cli.stderr)
+
+
 def test_compare_reports_the_squared_error_of_the_beauty():
     scene = caustica.load(BOX, defines={"res": "8"})
     a = caustica.render(scene, spp=4, seed=1)
