@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/image/image_output.h"
+#include "core/job/range_merge.h"
 #include "core/job/render_job.h"
 #include "core/job/render_outputs.h"
 #include "core/loader/scene_loader.h"
@@ -64,10 +65,8 @@ float Render::value(int x, int y, const std::string& channel) const {
 }
 
 void Render::write_exr(const std::filesystem::path& path, bool half_float) const {
-  const Image image{width, height, channels, pixels};
-  const bool raw_sums = metadata.count("caustica:raw_channels") > 0;
-  const bool half = half_float && !raw_sums && count_extreme_values(rows_of(image)).beyond_half == 0;
-  caustica::write_exr(path, image, metadata, half);
+  const RenderFile render{path.string(), {width, height, channels, pixels}, metadata};
+  caustica::write_exr(path, render.image, metadata, half_float && half_float_suits(render));
 }
 
 }  // namespace caustica::api

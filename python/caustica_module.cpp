@@ -89,16 +89,6 @@ void split_layers(const Image& image, PyResult& out) {
   }
 }
 
-// The degrees per pixel a render records, if it records a usable one.
-std::optional<double> recorded_degrees_per_pixel(const std::map<std::string, std::string>& metadata) {
-  const auto angle = metadata.find("caustica:degrees_per_pixel");
-  if (angle == metadata.end()) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(angle->second.c_str(), &end);
-  if (end == angle->second.c_str() || *end != '\0' || !(value > 0) || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 PyResult make_result(Image image, std::map<std::string, std::string> metadata,
                      std::shared_ptr<ToneOperator> scene_tonemap) {
   PyResult out;
@@ -184,10 +174,7 @@ void write_result(const PyResult& result, const std::filesystem::path& path, con
   if (exr_format != "half" && exr_format != "float")
     throw py::value_error("exr_format must be 'half' or 'float', not '" + exr_format + "'");
   py::gil_scoped_release released;
-  // As the command line: raw sums stay exact, and values beyond half's
-  // range stay finite, in float.
-  const bool half = exr_format == "half" && !has_raw_sums({path.string(), *result.image, result.metadata_text}) &&
-                    count_extreme_values(rows_of(*result.image)).beyond_half == 0;
+  const bool half = exr_format == "half" && half_float_suits({path.string(), *result.image, result.metadata_text});
   write_exr(path.string(), *result.image, result.metadata_text, half);
 }
 
@@ -294,8 +281,19 @@ py::array_t<float> develop(const py::object& source, const DevelopSettings& sett
 PYBIND11_MODULE(caustica, m) {
   using namespace caustica;
   m.doc() = "caustica: a physically based Monte Carlo renderer";
-  // A scene's errors carry its file and line in their message.
-  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  // A scene's errors carry its file and line in their message, and as the
+  // attributes `file` and `line` (0 where the problem has no line).
+  static py::exception<SceneError> scene_error(m, "SceneError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr failure) {
+    try {
+      if (failure) std::rethrow_exception(failure);
+    } catch (const SceneError& e) {
+      py::object error = static_cast<py::object&>(scene_error)(e.what());
+      error.attr("file") = e.where().file;
+      error.attr("line") = e.where().line;
+      PyErr_SetObject(scene_error.ptr(), error.ptr());
+    }
+  });
   py::class_<PyScene>(m, "Scene").def_readonly("name", &PyScene::name);
   py::class_<PyResult>(m, "Result")
       .def_readonly("beauty", &PyResult::beauty)

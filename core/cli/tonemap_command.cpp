@@ -1,13 +1,12 @@
 #include "core/cli/tonemap_command.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <optional>
 
 #include "core/image/image_input.h"
+#include "core/job/develop_settings.h"
 
 namespace caustica {
 
@@ -25,13 +24,7 @@ int TonemapCommand::run() const {
     return std::find(image.channels.begin(), image.channels.end(), name) != image.channels.end();
   };
   if (!has("R") || !has("G") || !has("B")) throw std::invalid_argument("'" + input_ + "' has no R, G, B channels");
-  std::optional<double> degrees_per_pixel;
-  if (const auto angle = metadata.find("caustica:degrees_per_pixel"); angle != metadata.end()) {
-    char* end = nullptr;
-    const double value = std::strtod(angle->second.c_str(), &end);
-    if (end != angle->second.c_str() && *end == '\0' && value > 0 && std::isfinite(value)) degrees_per_pixel = value;
-  }
-  const Developer developer = develop_.make(nullptr, std::nullopt, degrees_per_pixel);
+  const Developer developer = develop_.make(nullptr, std::nullopt, recorded_degrees_per_pixel(metadata));
   bool glare_spread = false;
   write_png(output_, image.width, image.height, developer.develop(image, &glare_spread), develop_.png_bits());
   std::printf("%s -> %s (%s)%s\n", input_.c_str(), output_.c_str(), developer.describe().c_str(),

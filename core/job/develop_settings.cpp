@@ -1,5 +1,7 @@
 #include "core/job/develop_settings.h"
 
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/registry/properties.h"
@@ -62,6 +64,15 @@ Developer make_developer(const DevelopSettings& settings, const std::shared_ptr<
       glare.degrees_per_pixel = *degrees_per_pixel;
   }
   return Developer(op, DisplayTransform(config, settings.display, settings.view, settings.look), gamma, glare);
+}
+
+std::optional<double> recorded_degrees_per_pixel(const std::map<std::string, std::string>& metadata) {
+  const auto angle = metadata.find("caustica:degrees_per_pixel");
+  if (angle == metadata.end()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(angle->second.c_str(), &end);
+  if (end == angle->second.c_str() || *end != '\0' || !(value > 0) || !std::isfinite(value)) return std::nullopt;
+  return value;
 }
 
 }  // namespace caustica

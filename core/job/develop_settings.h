@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,5 +31,9 @@ struct DevelopSettings {
 Developer make_developer(const DevelopSettings& settings, const std::shared_ptr<ToneOperator>& scene_default,
                          const std::optional<LdrDevelopment>& ldr = std::nullopt,
                          std::optional<double> degrees_per_pixel = std::nullopt);
+
+// The degrees per pixel a render's metadata records
+// (caustica:degrees_per_pixel), if it records a positive finite number.
+std::optional<double> recorded_degrees_per_pixel(const std::map<std::string, std::string>& metadata);
 
 }  // namespace caustica

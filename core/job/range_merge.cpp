@@ -87,6 +87,10 @@ bool has_raw_sums(const RenderFile& render) {
   return !film_channels(render, "caustica:raw_channels").empty() && render.image.channel_index("raw.count") >= 0;
 }
 
+bool half_float_suits(const RenderFile& render) {
+  return !has_raw_sums(render) && count_extreme_values(rows_of(render.image)).beyond_half == 0;
+}
+
 RenderFile without_raw_sums(RenderFile render) {
   Image& image = render.image;
   const size_t nc = image.channels.size(), pixels = size_t(image.width) * image.height;

@@ -9,6 +9,11 @@ namespace caustica {
 // Whether a render holds the film's raw sums (render --raw-sums).
 bool has_raw_sums(const RenderFile& render);
 
+// Whether the render may go to a half-float EXR: not when it holds raw sums
+// (they must stay exact), nor values beyond half's range (they would
+// become infinities).
+bool half_float_suits(const RenderFile& render);
+
 // The render without its raw sums, for merges that cannot use them.
 RenderFile without_raw_sums(RenderFile render);
 

@@ -62,6 +62,7 @@ def test_errors_carry_the_command_lines_messages():
         with pytest.raises(caustica.SceneError) as raised:
             caustica.load(path)
         assert str(raised.value) == f"{path}:2: parameter 'radius' of shape 'sphere': must be positive"
+        assert (raised.value.file, raised.value.line) == (str(path), 2)
         assert str(raised.value) in cli.stderr
         with pytest.raises(caustica.SceneError, match="bad.xml:2: parameter 'radius'"):
             caustica.load_string(bad, name="bad.xml")
