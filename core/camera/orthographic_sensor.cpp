@@ -98,7 +98,7 @@ class OrthographicSensor final : public Sensor {
 };
 
 std::vector<ParamSpec> orthographic_params() {
-  std::vector<ParamSpec> params = clip_params();
+  std::vector<ParamSpec> params = sensor_params();
   params.push_back({"focus_distance", ParamType::Float, std::nullopt, "accepted and ignored (no lens)"});
   params.push_back({"to_world", ParamType::Transform, "",
                     "placement and size: the film spans local x in [-1, 1] and y in [-h/w, h/w], looking along +z"});

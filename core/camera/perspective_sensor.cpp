@@ -146,7 +146,7 @@ class ThinLensSensor final : public ProjectiveSensor {
 std::vector<ParamSpec> projective_params(std::vector<ParamSpec> lens) {
   std::vector<ParamSpec> params = perspective_projection_params();
   params.insert(params.end(), lens.begin(), lens.end());
-  const std::vector<ParamSpec> clip = clip_params();
+  const std::vector<ParamSpec> clip = sensor_params();
   params.insert(params.end(), clip.begin(), clip.end());
   params.push_back(
       {"to_world", ParamType::Transform, "", "camera placement; it looks along local +z, with +y up and +x left"});

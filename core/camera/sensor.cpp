@@ -1,5 +1,7 @@
 #include "core/camera/sensor.h"
 
+#include <cmath>
+
 #include "core/media/medium.h"
 #include "core/registry/properties.h"
 #include "core/registry/registry.h"
@@ -19,11 +21,19 @@ std::shared_ptr<T> child_or_default(const Properties& props, const char* categor
 Sensor::Sensor(const Properties& props)
     : film_(child_or_default<Film>(props, "film", "hdrfilm")),
       sampler_(child_or_default<Sampler>(props, "sampler", "independent")),
-      medium_(props.child<Medium>("medium")) {}
+      medium_(props.child<Medium>("medium")),
+      shutter_open_(props.get_float("shutter_open")),
+      shutter_close_(props.get_float("shutter_close")) {
+  if (!std::isfinite(shutter_open_)) throw props.error("shutter_open", "must be finite");
+  if (!std::isfinite(shutter_close_) || shutter_close_ < shutter_open_)
+    throw props.error("shutter_close", "must be finite and no earlier than shutter_open");
+}
 
-std::vector<ParamSpec> clip_params() {
+std::vector<ParamSpec> sensor_params() {
   return {{"near_clip", ParamType::Float, "0.01", "near plane distance"},
-          {"far_clip", ParamType::Float, "10000", "far plane distance"}};
+          {"far_clip", ParamType::Float, "10000", "far plane distance"},
+          {"shutter_open", ParamType::Float, "0", "time the shutter opens (moving shapes' keys span the shutter)"},
+          {"shutter_close", ParamType::Float, "0", "time the shutter closes"}};
 }
 
 }  // namespace caustica

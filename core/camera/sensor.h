@@ -56,6 +56,9 @@ class Sensor : public Plugin {
   const std::shared_ptr<Sampler>& sampler() const { return sampler_; }
   // The medium the camera sits in (a nested <medium>), null for vacuum.
   const Medium* medium() const { return medium_.get(); }
+  // The shutter interval, in the scene's time: moving shapes' keys span it.
+  double shutter_open() const { return shutter_open_; }
+  double shutter_close() const { return shutter_close_; }
 
  protected:
   // Takes the nested film and sampler, or an hdrfilm and an independent
@@ -66,9 +69,11 @@ class Sensor : public Plugin {
   std::shared_ptr<Film> film_;
   std::shared_ptr<Sampler> sampler_;
   std::shared_ptr<const Medium> medium_;
+  double shutter_open_ = 0, shutter_close_ = 0;
 };
 
-// near_clip and far_clip, as every sensor declares them.
-std::vector<ParamSpec> clip_params();
+// near_clip, far_clip, shutter_open and shutter_close, as every sensor
+// declares them.
+std::vector<ParamSpec> sensor_params();
 
 }  // namespace caustica

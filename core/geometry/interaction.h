@@ -20,8 +20,9 @@ struct SurfaceInteraction {
   Vec3 dpdu, dpdv;  // surface tangents along the (u, v) parametrisation
   float t = kInfinity;
   const Shape* shape = nullptr;
+  float time = 0;  // the time of the ray that met the surface (see Ray::time)
 
-  Ray spawn(Vec3 d) const { return {offset_ray_origin(p, p_error, ng, d), d, kInfinity}; }
+  Ray spawn(Vec3 d) const { return {offset_ray_origin(p, p_error, ng, d), d, kInfinity, 0, time}; }
 
   // A segment toward `target` that stops just short of it, for visibility.
   Ray spawn_to(Vec3 target, Vec3 target_error, Vec3 target_n) const {
@@ -31,7 +32,7 @@ struct SurfaceInteraction {
     // The target is already off its surface; the margin only absorbs the
     // rounding of t itself, in proportion to the target's error bound.
     const float margin = 4 * length(target_error) / std::max(length(d), 1e-30f);
-    return {o, d, std::max(0.5f, 1 - margin)};
+    return {o, d, std::max(0.5f, 1 - margin), 0, time};
   }
 };
 

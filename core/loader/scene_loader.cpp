@@ -16,6 +16,8 @@
 #include "core/registry/file_resolver.h"
 #include "core/registry/ignored_params.h"
 #include "core/registry/properties.h"
+#include "core/registry/property_value.h"
+#include "core/shapes/moving_shape.h"
 
 namespace caustica {
 
@@ -99,9 +101,10 @@ class Instantiator {
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
   std::vector<SourceLocation> emitter_places;      // where each of `emitters` was written
   std::vector<std::string> warnings;
-  GivenValues integrator_values;       // what the last <integrator> built was given
-  int textures = 0;                    // texture plugins built, for the scene features
-  std::vector<GivenSpectrum> spectra;  // colours given as spectra, for the scene features
+  GivenValues integrator_values;                     // what the last <integrator> built was given
+  int textures = 0;                                  // texture plugins built, for the scene features
+  std::vector<GivenSpectrum> spectra;                // colours given as spectra, for the scene features
+  std::vector<std::shared_ptr<MovingShape>> moving;  // timed against the shutter once the sensor is built
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -129,8 +132,20 @@ class Instantiator {
     props.set_resolver(&resolver_);
     const bool group = node.tag == "shape" && type == "shapegroup";
     in_group_ += group;
-    for (const XmlNode& child : node.children) add_child(props, child, node.tag);
+    std::optional<Animation> animation;
+    for (const XmlNode& child : node.children) {
+      if (child.tag == "animation")
+        animation = read_animation(child, node, type);
+      else
+        add_child(props, child, node.tag);
+    }
     in_group_ -= group;
+    // A moving shape is built in its own space and placed by its keys.
+    if (animation) {
+      if (props.has("to_world"))
+        throw SceneError(animation->where, "a shape takes to_world as a transform or as an animation, not both");
+      props.set_render_origin(Vec3d());
+    }
 
     std::shared_ptr<Plugin> plugin;
     try {
@@ -145,6 +160,15 @@ class Instantiator {
     for (const std::string& name : info->ignored)
       if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
+    if (animation) {
+      if (std::static_pointer_cast<Shape>(plugin)->emitter())
+        throw SceneError(animation->where, "a moving shape cannot emit yet (area lights stay still)");
+      for (auto& [time, transform] : animation->keys) transform = Transform::translate(-render_origin_) * transform;
+      auto moving =
+          std::make_shared<MovingShape>(std::static_pointer_cast<Shape>(plugin), animation->keys, animation->where);
+      this->moving.push_back(moving);
+      plugin = moving;
+    }
     if (node.tag == "emitter") {
       std::static_pointer_cast<Emitter>(plugin)->set_medium(props.child<Medium>("medium"));
       emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
@@ -178,6 +202,35 @@ class Instantiator {
     } else {
       throw SceneError(child.where, "unknown element <" + child.tag + ">");
     }
+  }
+
+  struct Animation {
+    std::vector<std::pair<double, Transform>> keys;
+    SourceLocation where;
+  };
+
+  // <animation name="to_world"> with <transform time="..."> keys, on a shape
+  // of the scene's own (not in a group, nor a group or an instance).
+  Animation read_animation(const XmlNode& animation, const XmlNode& owner, const std::string& type) {
+    animation.check_attributes({"name"});
+    if (required_attribute(animation, "name") != "to_world")
+      throw SceneError(animation.where, "only to_world can be animated, not '" +
+                                            required_attribute(animation, "name").substr(0, 40) + "'");
+    if (owner.tag != "shape")
+      throw SceneError(animation.where, "only shapes can move yet: a moving " + owner.tag + " is not rendered");
+    if (type == "shapegroup" || type == "instance" || type == "csg" || in_group_ > 0)
+      throw SceneError(animation.where, "a " + (in_group_ > 0 ? "shape in a shapegroup" : type) +
+                                            " cannot move yet: animate a shape of the scene's own");
+    Animation out{{}, animation.where};
+    for (const XmlNode& key : animation.children) {
+      if (key.tag != "transform")
+        throw SceneError(key.where, "an <animation> holds only <transform time=\"...\"> keys, not <" + key.tag + ">");
+      key.check_attributes({"time"});
+      const double time =
+          std::get<double>(parse_value_text(ValueKind::Float, required_attribute(key, "time"), key.where).value);
+      out.keys.emplace_back(time, parse_transform(key));
+    }
+    return out;
   }
 
   // A shape with a place of its own (not a group, nor an instance, which a
@@ -284,6 +337,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   }
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
+  for (const auto& moving : inst.moving) moving->set_shutter(sensor->shutter_open(), sensor->shutter_close());
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);

@@ -1,6 +1,10 @@
 #include "core/loader/upgrade_0x.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
 
 namespace caustica {
 namespace {
@@ -59,6 +63,29 @@ void upgrade_uv_transform(XmlNode& bitmap) {
   bitmap.children.push_back(std::move(transform));
 }
 
+// 0.x sensors give the shutter's opening and how long it stays open
+// (shutter_open_time); caustica's give its opening and closing.
+void upgrade_shutter(XmlNode& sensor) {
+  const auto number = [](const XmlNode& child) -> std::optional<double> {
+    const std::string* v = child.attribute("value");
+    if (!v) return std::nullopt;
+    char* end = nullptr;
+    const double x = std::strtod(v->c_str(), &end);
+    if (end == v->c_str() || *end != '\0' || !std::isfinite(x)) return std::nullopt;
+    return x;
+  };
+  double open = 0;
+  XmlNode* duration = nullptr;
+  for (XmlNode& child : sensor.children) {
+    if (has_name(child, "shutter_open") && number(child)) open = *number(child);
+    if (has_name(child, "shutter_open_time")) duration = &child;
+  }
+  if (!duration || !number(*duration)) return;
+  char close[32];
+  std::snprintf(close, sizeof close, "%.17g", open + *number(*duration));
+  *duration = XmlNode{"float", {{"name", "shutter_close"}, {"value", close}}, {}, duration->where};
+}
+
 }  // namespace
 
 void upgrade_object_from_0x(XmlNode& object, std::vector<std::string>& notes) {
@@ -73,6 +100,7 @@ void upgrade_object_from_0x(XmlNode& object, std::vector<std::string>& notes) {
       if (object.tag == r.tag && (!*r.type || type == r.type) && *name == r.from) *name = r.to;
   }
   if (object.tag == "texture" && type == "bitmap") upgrade_uv_transform(object);
+  if (object.tag == "sensor") upgrade_shutter(object);
   std::erase_if(object.children, [&](const XmlNode& child) {
     for (const Ignored& i : kIgnored)
       if (object.tag == i.tag && has_name(child, i.name)) {

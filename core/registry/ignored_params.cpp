@@ -4,12 +4,6 @@ namespace caustica {
 
 const std::vector<IgnoredParam>& ignored_params() {
   static const std::vector<IgnoredParam> params = {
-      {"sensor",
-       {"shutter_open", ParamType::Float, std::nullopt, "accepted and ignored (nothing moves)"},
-       "nothing in a caustica scene moves, so the shutter's interval changes nothing"},
-      {"sensor",
-       {"shutter_close", ParamType::Float, std::nullopt, "accepted and ignored (nothing moves)"},
-       "nothing in a caustica scene moves, so the shutter's interval changes nothing"},
       {"integrator",
        {"samples_per_pass", ParamType::Integer, std::nullopt, "accepted and ignored"},
        "the image does not depend on how its samples are split into passes"},

@@ -8,8 +8,8 @@
 namespace caustica {
 
 // Parameters Mitsuba 3 gives every plugin of a category that cannot change
-// what caustica renders (a shutter where nothing moves, differentiable
-// rendering's weights, how samples are split into passes). Every plugin of
+// what caustica renders (differentiable rendering's weights, how samples
+// are split into passes). Every plugin of
 // the category accepts them; a scene that gives one gets a line saying it
 // is ignored and why.
 struct IgnoredParam {

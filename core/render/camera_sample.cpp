@@ -9,7 +9,11 @@ CameraSample sample_camera_ray(const Scene& scene, Sampler& sampler, Vec2i pixel
   const Sensor& sensor = scene.sensor();
   const FilterSample fs = sensor.film()->filter().sample(sampler.next_2d());
   const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
-  return {sensor.generate_ray(raster, sensor.has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f)), fs.weight};
+  CameraSample sample{sensor.generate_ray(raster, sensor.has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f)), fs.weight};
+  // A time only where something moves: a still scene draws the samples it
+  // always drew.
+  if (scene.features().motion) sample.ray.time = sampler.next_1d();
+  return sample;
 }
 
 }  // namespace caustica

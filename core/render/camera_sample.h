@@ -19,7 +19,8 @@ struct CameraSample {
 
 // Starts `sampler` on sample `index` of the pixel's camera stream and draws
 // the ray from it: the filter's two numbers, then the lens's two if the
-// camera has a lens. Every algorithm that starts a path at the camera
+// camera has a lens, then the time in the shutter interval if anything in
+// the scene moves. Every algorithm that starts a path at the camera
 // starts it here, so they all see the same rays.
 CameraSample sample_camera_ray(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed);
 

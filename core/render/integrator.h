@@ -85,10 +85,14 @@ class Integrator : public Plugin {
   virtual std::string distributed_note() const { return ""; }
   // Whether it follows paths through participating media and null surfaces.
   virtual bool renders_media() const { return false; }
+  // Whether its paths follow a time through the shutter (every ray of a
+  // camera path at its camera ray's time), so that it renders moving shapes.
+  virtual bool renders_motion() const { return false; }
   // Whether it renders in spectral mode (paths carrying wavelengths).
   virtual bool renders_spectral() const { return false; }
   // Throws std::invalid_argument, saying why, if it cannot render `scene`
-  // (a scene with media for an integrator that does not render them, or a
+  // (a scene with media or moving shapes for an integrator that does not
+  // render them, or a
   // scene in spectral mode that it or the scene's materials cannot render
   // so yet).
   void check_scene(const Scene& scene) const;

@@ -17,6 +17,7 @@ RTCRay to_rtc(const Ray& ray) {
   r.dir_z = ray.d.z;
   r.tnear = ray.t_min;
   r.tfar = ray.t_max;
+  r.time = ray.time;
   r.mask = ~0u;
   r.flags = 0;
   return r;
@@ -49,7 +50,9 @@ std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
   const RayHit hit{rayhit.ray.tfar, rayhit.hit.primID, rayhit.hit.geomID, {rayhit.hit.u, rayhit.hit.v}};
   // Within an instance, geomID names the geometry in its group.
   const unsigned top = rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayhit.hit.instID[0] : rayhit.hit.geomID;
-  return by_geom_id_[top]->interaction(ray, hit);
+  SurfaceInteraction si = by_geom_id_[top]->interaction(ray, hit);
+  si.time = ray.time;
+  return si;
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

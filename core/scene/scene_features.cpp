@@ -145,9 +145,11 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
   }
   bool receiver = false;
   for (const auto& s : scene.shapes()) {
+    f.moving_shapes += s->moves();
     f.lobes |= s->lobes();
     receiver = receiver || (s->lobes() & ~(kDelta | kNull));
   }
+  f.motion = f.moving_shapes > 0;
   int specular_shapes = 0;
   const Shape* lit_specular = nullptr;
   const std::set<const Shape*> met = met_by_light_rays(scene);
@@ -200,6 +202,12 @@ std::string describe(const SceneFeatures& f) {
         << " heterogeneous; " << f.chromatic_media << " with extinction differing between channels)";
     if (f.camera_in_medium) out << "; the camera sits in one";
   }
+  out << "\nmotion: ";
+  if (f.motion)
+    out << f.moving_shapes << (f.moving_shapes == 1 ? " shape moves" : " shapes move")
+        << " during the shutter; camera rays draw a time";
+  else
+    out << "none (nothing moves; no time is drawn)";
   out << "\n" << describe_transport(f) << "\n";
   return out.str();
 }

@@ -54,6 +54,8 @@ class Shape : public Plugin {
   virtual bool is_group() const { return false; }
   // An instance of a shapegroup: it cannot carry an emitter, nor sit in a group.
   virtual bool is_instance() const { return false; }
+  // A shape whose place changes over the shutter interval (MovingShape).
+  virtual bool moves() const { return false; }
   // The BsdfLobe flags of what the shape reflects (an instance's are its group's).
   virtual uint32_t lobes() const;
   // Shapes that bound a solid and cross a line analytically (a sphere, a

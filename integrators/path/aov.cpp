@@ -51,6 +51,7 @@ class AovIntegrator final : public PixelIntegrator {
 
   std::vector<std::string> channels() const override { return evaluator_.channels(); }
   bool renders_media() const override { return true; }
+  bool renders_motion() const override { return true; }
   // The layers carry no light, so spectral transport changes nothing here.
   bool renders_spectral() const override { return true; }
 

@@ -63,6 +63,7 @@ class DirectIntegrator final : public RadianceIntegrator {
   }
 
   bool renders_spectral() const override { return true; }
+  bool renders_motion() const override { return true; }
 
  private:
   friend class DirectLight;

@@ -33,6 +33,7 @@ class PathIntegrator : public RadianceIntegrator {
   }
 
   bool renders_media() const override { return true; }
+  bool renders_motion() const override { return true; }
   bool renders_spectral() const override { return true; }
 
   std::string plan(const Scene& scene) const override {

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "core/errors/scene_error.h"
+#include "core/math/animated_transform.h"
+#include "core/shapes/shape.h"
+
+namespace caustica {
+
+// A shape whose to_world moves over the shutter interval, written as
+// Mitsuba 0.6 wrote it:
+//
+//   <shape type="sphere">
+//       <animation name="to_world">
+//           <transform time="0"><translate x="-1"/></transform>
+//           <transform time="1"><translate x="1"/></transform>
+//       </animation>
+//   </shape>
+//
+// The shape is built in its own space and placed by an Embree instance
+// with one time step per key (quaternion motion: scale and shear, rotation
+// and translation interpolated apart, as AnimatedTransform does); a ray
+// meets it where it is at the ray's time. The keys' times must be
+// increasing and evenly spaced, the first at the sensor's shutter_open and
+// the last at its shutter_close (set_shutter checks them).
+class MovingShape final : public Shape {
+ public:
+  // `keys` place the shape in render space; `where` is the animation's.
+  MovingShape(std::shared_ptr<Shape> local, std::vector<std::pair<double, Transform>> keys, SourceLocation where);
+  ~MovingShape() override;
+  MovingShape(const MovingShape&) = delete;
+  MovingShape& operator=(const MovingShape&) = delete;
+
+  // Times the keys against the shutter [open, close]; throws SceneError
+  // naming the animation if they do not span it evenly.
+  void set_shutter(double open, double close);
+
+  bool moves() const override { return true; }
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  SurfaceInteraction interaction(const Ray& ray, const RayHit& hit) const override;
+  float area() const override { return local_->area(); }
+  Bounds3 bounds() const override;
+  PositionSample sample_position(Vec2 u) const override;
+  uint32_t lobes() const override { return local_->lobes(); }
+  std::vector<const Shape*> material_surfaces() const override { return local_->material_surfaces(); }
+  std::string kind() const override { return local_->kind() + " (moving)"; }
+
+ private:
+  std::shared_ptr<Shape> local_;
+  std::vector<std::pair<double, Transform>> keys_;
+  SourceLocation where_;
+  AnimatedTransform motion_;
+  mutable std::vector<std::pair<RTCDevice, RTCScene>> built_;
+  mutable std::vector<const Shape*> by_geom_id_;
+};
+
+}  // namespace caustica
