@@ -10,10 +10,12 @@ CameraSample sample_camera_ray(const Scene& scene, Sampler& sampler, Vec2i pixel
   const FilterSample fs = sensor.film()->filter().sample(sampler.next_2d());
   const Vec2 raster{float(pixel.x) + 0.5f + fs.offset.x, float(pixel.y) + 0.5f + fs.offset.y};
   CameraSample sample{sensor.generate_ray(raster, sensor.has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f)), fs.weight};
-  // A time only where something moves: a still scene draws the samples it
-  // always drew.
-  if (scene.features().motion) sample.ray.time = sampler.next_1d();
+  sample.ray.time = sample_shutter_time(scene, sampler);
   return sample;
+}
+
+float sample_shutter_time(const Scene& scene, Sampler& sampler) {
+  return scene.features().motion ? sampler.next_1d() : 0.0f;
 }
 
 }  // namespace caustica

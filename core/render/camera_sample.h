@@ -24,4 +24,9 @@ struct CameraSample {
 // starts it here, so they all see the same rays.
 CameraSample sample_camera_ray(const Scene& scene, Sampler& sampler, Vec2i pixel, uint64_t index, uint64_t seed);
 
+// A path's time, as a fraction of the shutter interval: drawn from the
+// sampler's next number when something in the scene moves, else 0 without
+// drawing, so a still scene's streams stay as they were.
+float sample_shutter_time(const Scene& scene, Sampler& sampler);
+
 }  // namespace caustica

@@ -21,7 +21,8 @@ struct LightPathStart {
 
 // Always draws the same three numbers (selection, position, direction), so
 // what follows in the path's stream does not depend on whether it started.
-// None when the scene has nothing to emit or the emitter sent nothing.
-std::optional<LightPathStart> start_light_path(const Scene& scene, Sampler& sampler);
+// None when the scene has nothing to emit or the emitter sent nothing. The
+// ray leaves at `time` (see Ray::time), the time of the whole path.
+std::optional<LightPathStart> start_light_path(const Scene& scene, Sampler& sampler, float time);
 
 }  // namespace caustica

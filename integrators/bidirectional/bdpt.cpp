@@ -84,7 +84,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     Wavelengths* wavelengths = w.get();
     trace_camera_subpath(scene, cs.ray, sampler, settings_, camera, wavelengths);
     compute_densities(scene, camera);
-    trace_light_subpath(scene, sampler, settings_, light, wavelengths);
+    trace_light_subpath(scene, sampler, cs.ray.time, settings_, light, wavelengths);
     compute_densities(scene, light);
 
     for (int t = 1; t <= int(camera.size()); ++t)
@@ -111,6 +111,7 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
 
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("bdpt: every (s, t) strategy, weighed by the ") +

@@ -43,6 +43,7 @@
 #include "core/film/film_buffer.h"
 #include "core/film/splat_list.h"
 #include "core/registry/properties.h"
+#include "core/render/camera_sample.h"
 #include "core/render/iterative_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/sampling/discrete_distribution.h"
@@ -105,17 +106,20 @@ Contribution evaluate(const Scene& scene, const MltSettings& mlt, PrimarySampleS
   settings.rr_depth = std::numeric_limits<int64_t>::max();
   settings.max_depth = t - 1;
   const Vec2 u_lens = numbers.next_2d();
+  const float time = sample_shutter_time(scene, numbers);
   camera.clear();
   // Strategy t = 1 samples its own lens point when it joins the camera.
   if (t >= 2) {
-    trace_camera_subpath(scene, scene.sensor().generate_ray(raster, u_lens), numbers, settings, camera);
+    Ray ray = scene.sensor().generate_ray(raster, u_lens);
+    ray.time = time;
+    trace_camera_subpath(scene, ray, numbers, settings, camera);
     if (int(camera.size()) < t) return {raster, {}};
   }
   numbers.start_stream(kLightStream);
   light.clear();
   if (s > 0) {
     settings.max_depth = s;
-    trace_light_subpath(scene, numbers, settings, light);
+    trace_light_subpath(scene, numbers, time, settings, light);
     if (int(light.size()) < s) return {raster, {}};
   }
   compute_densities(scene, camera);
@@ -167,6 +171,8 @@ class MetropolisLightTransport final : public IterativeIntegrator {
   std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
     return std::make_unique<MltChains>(mlt_, scene, seed);
   }
+
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene&) const override {
     return "mlt: " + std::to_string(mlt_.chains) + " Markov chains over bdpt's strategies for paths of 1 to " +

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/registry/properties.h"
+#include "core/render/camera_sample.h"
 #include "core/render/light_path_integrator.h"
 #include "core/render/path_settings.h"
 #include "core/render/sample_wavelengths.h"
@@ -39,7 +40,8 @@ class ParticleTracer final : public LightPathIntegrator {
     thread_local std::vector<PathVertex> light;
     // In spectral mode the light path draws its wavelengths first.
     SampleWavelengths w(scene, sampler);
-    trace_light_subpath(scene, sampler, settings_, light, w.get());
+    const float time = sample_shutter_time(scene, sampler);
+    trace_light_subpath(scene, sampler, time, settings_, light, w.get());
     for (int s = settings_.hide_emitters ? 2 : 1; s <= int(light.size()); ++s)
       if (const auto c = connect_to_camera(scene, light, s, sampler, w.get()))
         splats.add(c->raster, w.to_rgb(c->value));
@@ -48,6 +50,7 @@ class ParticleTracer final : public LightPathIntegrator {
 
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("ptracer: light paths joined to the camera") +

@@ -76,6 +76,7 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
   PathVertex& camera = path.emplace_back();
   camera.kind = PathVertex::Kind::Camera;
   camera.si.p = ray.o;
+  camera.si.time = ray.time;
   camera.beta = Color(1);
   camera.medium = scene.sensor().medium();
   // Every camera's importance and the densities it samples rays with cancel
@@ -86,10 +87,10 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
               camera.medium, wavelengths);
 }
 
-void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
+void trace_light_subpath(const Scene& scene, Sampler& sampler, float time, const PathSettings& settings,
                          std::vector<PathVertex>& path, Wavelengths* wavelengths) {
   path.clear();
-  const auto start = start_light_path(scene, sampler);
+  const auto start = start_light_path(scene, sampler, time);
   if (settings.max_depth == 0 || !start) return;
 
   PathVertex& light = path.emplace_back();
@@ -97,6 +98,7 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSetting
   light.emitter = start->emitter;
   light.delta_light = start->emitter->is_delta();
   light.medium = start->emitter->medium();
+  light.si.time = time;  // a connection from the light's own point leaves at the path's time
   if (start->emitter->is_infinite()) {
     light.environment = true;
     light.w_env = -start->le.ray.d;

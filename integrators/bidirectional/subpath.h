@@ -25,7 +25,8 @@ void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, 
 // it emits, and the surfaces that ray's walk hits (BSDFs in importance
 // mode). Empty when the scene has no light to start from. It has at most
 // max_depth vertices, the light's included: its last still joins the camera.
-void trace_light_subpath(const Scene& scene, Sampler& sampler, const PathSettings& settings,
+// The path is at `time` (see Ray::time); a camera subpath is at its ray's.
+void trace_light_subpath(const Scene& scene, Sampler& sampler, float time, const PathSettings& settings,
                          std::vector<PathVertex>& path, Wavelengths* wavelengths = nullptr);
 
 // Sets pdf_fwd and pdf_rev of every vertex from the geometry, the way the

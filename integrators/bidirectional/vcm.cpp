@@ -184,7 +184,7 @@ bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>
     for (size_t i = b * kBlock; i < std::min(light_paths_.size(), (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
       std::vector<PathVertex>& light = light_paths_[i];
-      trace_light_subpath(scene_, *sampler, settings, light);
+      trace_light_subpath(scene_, *sampler, 0, settings, light);
       compute_densities(scene_, light);
       if (!merging_.connections) continue;
       for (int s = 1; s <= int(light.size()); ++s) {

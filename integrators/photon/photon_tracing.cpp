@@ -48,7 +48,7 @@ class PhotonRecorder {
 
 void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
                   std::vector<Photon>& out, const Wavelengths* round_wavelengths) {
-  const auto start = start_light_path(scene, sampler);
+  const auto start = start_light_path(scene, sampler, 0);
   if (!start) return;
   SampleWavelengths w(round_wavelengths);
   Wavelengths* wavelengths = w.get();

@@ -28,8 +28,8 @@ namespace caustica {
 namespace {
 
 constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 32;
-const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
-                               "cornell-box-glossy", "cornell-box-phong", "cornell-box-textured"};
+const char* const kScenes[] = {"cornell-box",       "cornell-box-glass",    "cornell-box-mirror", "cornell-box-glossy",
+                               "cornell-box-phong", "cornell-box-textured", "cornell-box-motion"};
 struct Integrator {
   const char* name;
   uint32_t spp;

@@ -119,8 +119,8 @@ TEST(PrimarySampleSpace, RejectionRestoresTheStateAndStreamsAreApart) {
 
 const char* const kMlt = "mlt:bootstrap=5000,chains=64";
 constexpr int kRuns = 16;
-const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
-                               "cornell-box-glossy", "cornell-box-phong", "cornell-box-textured"};
+const char* const kScenes[] = {"cornell-box",       "cornell-box-glass",    "cornell-box-mirror", "cornell-box-glossy",
+                               "cornell-box-phong", "cornell-box-textured", "cornell-box-motion"};
 
 // Region means of independent mlt renders (64 passes each) against bdpt's
 // at the same depth, by a two-sample test at 1%, Sidak-corrected over

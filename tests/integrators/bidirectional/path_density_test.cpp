@@ -131,7 +131,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
     for (int i = 0; i < 1000; ++i) {
       sampler->start_sample(SampleKey::camera({i % 16, i / 16 % 16}), uint64_t(i), 5);
       if (i % 2)
-        trace_light_subpath(*scene, *sampler, settings, path);
+        trace_light_subpath(*scene, *sampler, 0, settings, path);
       else
         trace_camera_subpath(*scene, scene->sensor().generate_ray({i % 16 + 0.5f, i / 16 % 16 + 0.5f}, {0.5f, 0.5f}),
                              *sampler, settings, path);
@@ -229,7 +229,7 @@ TEST(PathDensity, AScatteringEventOnThePreviousVertexEndsTheSubpath) {
     compute_densities(*scene, camera);
     expect_distinct_vertices_and_finite_densities(camera);
     sampler.start_sample(SampleKey::light_path({2, 2}), 0, 0);
-    trace_light_subpath(*scene, sampler, settings, light);
+    trace_light_subpath(*scene, sampler, 0, settings, light);
     compute_densities(*scene, light);
     expect_distinct_vertices_and_finite_densities(light);
     // With 0.3 throughout, flights of 0.18 scatter on to the length limit.

@@ -164,7 +164,7 @@ void for_each_path(const Scene& scene, int samples, F&& f) {
     const Vec2 raster{sampler->next_1d() * film.width(), sampler->next_1d() * film.height()};
     trace_camera_subpath(scene, scene.sensor().generate_ray(raster, sampler->next_2d()), *sampler, settings, camera);
     compute_densities(scene, camera);
-    trace_light_subpath(scene, *sampler, settings, light);
+    trace_light_subpath(scene, *sampler, 0, settings, light);
     compute_densities(scene, light);
     for (int t = 1; t <= int(camera.size()); ++t)
       for (int s = 0; s <= int(light.size()); ++s) {
