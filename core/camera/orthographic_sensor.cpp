@@ -47,10 +47,10 @@ class OrthographicSensor final : public Sensor {
     area_ = lx * ly * 4 * aspect_y_ * window_.fraction();
   }
 
-  Ray generate_ray(Vec2 raster, Vec2) const override {
+  Ray generate_ray(Vec2 raster, Vec2, float time) const override {
     const Vec2 u = window_.to_film(raster);
     const float x = 1 - 2 * u.x, y = (1 - 2 * u.y) * aspect_y_;
-    return {origin_ + axis_x_ * x + axis_y_ * y, forward_, far_, near_};
+    return {origin_ + axis_x_ * x + axis_y_ * y, forward_, far_, near_, time};
   }
 
   // The ray's direction is taken to be `forward` (the delta); what counts

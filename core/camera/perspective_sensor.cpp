@@ -67,15 +67,15 @@ class ProjectiveSensor : public Sensor {
  public:
   bool has_lens() const override { return lens_radius_ > 0; }
 
-  Ray generate_ray(Vec2 raster, Vec2 u_lens) const override {
+  Ray generate_ray(Vec2 raster, Vec2 u_lens, float time) const override {
     const Vec3 on_plane = projection_.plane_point(raster);
     if (lens_radius_ == 0) {
       const Vec3 d_local = normalize(on_plane);
-      return {origin_, normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z};
+      return {origin_, normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z, time};
     }
     const Vec2 lens = square_to_uniform_disk_concentric(u_lens) * lens_radius_;
     const Vec3 d_local = normalize(on_plane * focus_ - Vec3(lens.x, lens.y, 0));
-    return {lens_point(lens), normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z};
+    return {lens_point(lens), normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z, time};
   }
 
   Color We(const Ray& ray, Vec2* raster) const override {

@@ -32,7 +32,8 @@ Sensor::Sensor(const Properties& props)
 std::vector<ParamSpec> sensor_params() {
   return {{"near_clip", ParamType::Float, "0.01", "near plane distance"},
           {"far_clip", ParamType::Float, "10000", "far plane distance"},
-          {"shutter_open", ParamType::Float, "0", "time the shutter opens (moving shapes' keys span the shutter)"},
+          {"shutter_open", ParamType::Float, "0",
+           "time the shutter opens (moving shapes' and cameras' keys span the shutter)"},
           {"shutter_close", ParamType::Float, "0", "time the shutter closes"}};
 }
 

@@ -39,24 +39,28 @@ struct ClipPlanes {
 // of a light path splatted at its raster position estimates the pixel.
 class Sensor : public Plugin {
  public:
-  virtual Ray generate_ray(Vec2 raster, Vec2 u_lens) const = 0;
+  // The ray leaves at `time` (see Ray::time), from where the camera stands then.
+  virtual Ray generate_ray(Vec2 raster, Vec2 u_lens, float time = 0) const = 0;
   // Whether generate_ray and sample_Wi use their lens sample; a pinhole
   // does not, and then none is drawn.
   virtual bool has_lens() const { return false; }
   // Whether every ray leaves along one direction (orthographic): then
   // pdf_We's density is per unit area of the film, pdf_dir being a delta.
   virtual bool delta_direction() const { return false; }
-  // Importance emitted along `ray` (which starts on the lens) and its raster position.
+  // Importance emitted along `ray` (which starts on the lens, at ray.time)
+  // and its raster position.
   virtual Color We(const Ray& ray, Vec2* raster) const = 0;
   virtual void pdf_We(const Ray& ray, float* pdf_pos, float* pdf_dir) const = 0;
   virtual std::optional<WiSample> sample_Wi(const ReferencePoint& ref, Vec2 u) const = 0;
   virtual ClipPlanes clip_planes() const = 0;
+  // Whether the camera moves over the shutter (MovingSensor).
+  virtual bool moves() const { return false; }
 
   const std::shared_ptr<Film>& film() const { return film_; }
   const std::shared_ptr<Sampler>& sampler() const { return sampler_; }
   // The medium the camera sits in (a nested <medium>), null for vacuum.
   const Medium* medium() const { return medium_.get(); }
-  // The shutter interval, in the scene's time: moving shapes' keys span it.
+  // The shutter interval, in the scene's time: moving shapes' and cameras' keys span it.
   double shutter_open() const { return shutter_open_; }
   double shutter_close() const { return shutter_close_; }
 

@@ -7,11 +7,13 @@
 
 #include "core/bsdf/bsdf.h"
 #include "core/camera/clip_check.h"
+#include "core/camera/moving_sensor.h"
 #include "core/errors/interrupted.h"
 #include "core/lights/emitter.h"
 #include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
+#include "core/math/shutter_keys.h"
 #include "core/media/medium.h"
 #include "core/registry/file_resolver.h"
 #include "core/registry/ignored_params.h"
@@ -140,11 +142,18 @@ class Instantiator {
         add_child(props, child, node.tag);
     }
     in_group_ -= group;
-    // A moving shape is built in its own space and placed by its keys.
+    // A moving shape is built in its own space and placed by its keys; a
+    // moving camera is built where its first key places it.
     if (animation) {
       if (props.has("to_world"))
-        throw SceneError(animation->where, "a shape takes to_world as a transform or as an animation, not both");
-      props.set_render_origin(Vec3d());
+        throw SceneError(animation->where,
+                         "a " + node.tag + " takes to_world as a transform or as an animation, not both");
+      if (node.tag == "sensor") {
+        check_keys(*animation, props.get_float("shutter_open"), props.get_float("shutter_close"));
+        props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
+      } else {
+        props.set_render_origin(Vec3d());
+      }
     }
 
     std::shared_ptr<Plugin> plugin;
@@ -160,7 +169,16 @@ class Instantiator {
     for (const std::string& name : info->ignored)
       if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
-    if (animation) {
+    if (animation && node.tag == "sensor") {
+      std::vector<Transform> keys;
+      for (const auto& [time, transform] : animation->keys)
+        keys.push_back(Transform::translate(-render_origin_) * transform);
+      try {
+        plugin = std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
+      } catch (const std::invalid_argument& e) {
+        throw SceneError(animation->where, e.what());
+      }
+    } else if (animation) {
       if (std::static_pointer_cast<Shape>(plugin)->emitter())
         throw SceneError(animation->where, "a moving shape cannot emit yet (area lights stay still)");
       for (auto& [time, transform] : animation->keys) transform = Transform::translate(-render_origin_) * transform;
@@ -209,15 +227,17 @@ class Instantiator {
     SourceLocation where;
   };
 
-  // <animation name="to_world"> with <transform time="..."> keys, on a shape
-  // of the scene's own (not in a group, nor a group or an instance).
+  // <animation name="to_world"> with <transform time="..."> keys, on a
+  // sensor or on a shape of the scene's own (not in a group, nor a group or
+  // an instance).
   Animation read_animation(const XmlNode& animation, const XmlNode& owner, const std::string& type) {
     animation.check_attributes({"name"});
     if (required_attribute(animation, "name") != "to_world")
       throw SceneError(animation.where, "only to_world can be animated, not '" +
                                             required_attribute(animation, "name").substr(0, 40) + "'");
-    if (owner.tag != "shape")
-      throw SceneError(animation.where, "only shapes can move yet: a moving " + owner.tag + " is not rendered");
+    if (owner.tag != "shape" && owner.tag != "sensor")
+      throw SceneError(animation.where,
+                       "only shapes and sensors can move yet: a moving " + owner.tag + " is not rendered");
     if (type == "shapegroup" || type == "instance" || type == "csg" || in_group_ > 0)
       throw SceneError(animation.where, "a " + (in_group_ > 0 ? "shape in a shapegroup" : type) +
                                             " cannot move yet: animate a shape of the scene's own");
@@ -231,6 +251,13 @@ class Instantiator {
       out.keys.emplace_back(time, parse_transform(key));
     }
     return out;
+  }
+
+  static void check_keys(const Animation& animation, double open, double close) {
+    std::vector<double> times;
+    for (const auto& [time, transform] : animation.keys) times.push_back(time);
+    if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
+      throw SceneError(animation.where, problem);
   }
 
   // A shape with a place of its own (not a group, nor an instance, which a
@@ -298,8 +325,12 @@ Vec3d camera_position(const XmlNode& root) {
   for (const XmlNode& node : root.children)
     if (node.tag == "sensor")
       for (const XmlNode& child : node.children)
-        if (child.tag == "transform" && child.attribute("name") && *child.attribute("name") == "to_world")
-          return parse_transform(child).point_double({0, 0, 0});
+        if (child.attribute("name") && *child.attribute("name") == "to_world") {
+          if (child.tag == "transform") return parse_transform(child).point_double({0, 0, 0});
+          // A moving camera's first key.
+          if (child.tag == "animation" && !child.children.empty() && child.children.front().tag == "transform")
+            return parse_transform(child.children.front()).point_double({0, 0, 0});
+        }
   return {};
 }
 

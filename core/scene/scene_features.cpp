@@ -149,7 +149,8 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
     f.lobes |= s->lobes();
     receiver = receiver || (s->lobes() & ~(kDelta | kNull));
   }
-  f.motion = f.moving_shapes > 0;
+  f.moving_camera = scene.sensor().moves();
+  f.motion = f.moving_shapes > 0 || f.moving_camera;
   int specular_shapes = 0;
   const Shape* lit_specular = nullptr;
   const std::set<const Shape*> met = met_by_light_rays(scene);
@@ -204,7 +205,10 @@ std::string describe(const SceneFeatures& f) {
   }
   out << "\nmotion: ";
   if (f.motion)
-    out << f.moving_shapes << (f.moving_shapes == 1 ? " shape moves" : " shapes move")
+    out << (f.moving_shapes == 0   ? std::string()
+            : f.moving_shapes == 1 ? "1 shape moves"
+                                   : std::to_string(f.moving_shapes) + " shapes move")
+        << (f.moving_shapes > 0 && f.moving_camera ? " and " : "") << (f.moving_camera ? "the camera moves" : "")
         << " during the shutter; camera rays draw a time";
   else
     out << "none (nothing moves; no time is drawn)";

@@ -33,9 +33,11 @@ struct SceneFeatures {
   // Paths must track media and step through null (index-matched) surfaces;
   // where neither occurs the walk takes no medium branch at all.
   bool medium_walk = false;
-  // Shapes that move over the shutter interval: camera rays then draw a
-  // time, and only integrators that follow it may render the scene.
+  // Shapes, or the camera, moving over the shutter interval: camera rays
+  // then draw a time, and only integrators that follow it may render the
+  // scene.
   int moving_shapes = 0;
+  bool moving_camera = false;
   bool motion = false;
   // Spectral transport: whether paths carry wavelengths, and why (what the
   // scene holds, or a render setting that decided it); the materials, by

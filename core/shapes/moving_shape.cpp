@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/math/constants.h"
+#include "core/math/shutter_keys.h"
 #include "core/shapes/rtc_scene.h"
 
 namespace caustica {
@@ -13,12 +14,6 @@ namespace caustica {
 MovingShape::MovingShape(std::shared_ptr<Shape> local, std::vector<std::pair<double, Transform>> keys,
                          SourceLocation where)
     : local_(std::move(local)), keys_(std::move(keys)), where_(std::move(where)) {
-  if (keys_.size() < 2) throw SceneError(where_, "an animation needs at least two <transform time=...> keys");
-  for (size_t k = 1; k < keys_.size(); ++k)
-    if (!(keys_[k].first > keys_[k - 1].first))
-      throw SceneError(where_, "the animation's key times must increase (key " + std::to_string(k + 1) + " at " +
-                                   std::to_string(keys_[k].first) + " follows one at " +
-                                   std::to_string(keys_[k - 1].first) + ")");
   std::vector<Transform> transforms;
   for (const auto& [time, transform] : keys_) transforms.push_back(transform);
   try {
@@ -33,24 +28,10 @@ MovingShape::~MovingShape() {
 }
 
 void MovingShape::set_shutter(double open, double close) {
-  const double first = keys_.front().first, last = keys_.back().first;
-  const auto text = [](double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", v);
-    return std::string(buffer);
-  };
-  if (!(close > open))
-    throw SceneError(where_, "the sensor's shutter is closed (shutter_open " + text(open) + ", shutter_close " +
-                                 text(close) + "), so nothing can move during it: give it an interval");
-  const double tolerance = 1e-6 * std::max(1.0, std::abs(open) + std::abs(close));
-  if (std::abs(first - open) > tolerance || std::abs(last - close) > tolerance)
-    throw SceneError(where_, "the animation's keys run from " + text(first) + " to " + text(last) +
-                                 ", and must span the sensor's shutter, from " + text(open) + " to " + text(close));
-  const double step = (last - first) / double(keys_.size() - 1);
-  for (size_t k = 0; k < keys_.size(); ++k)
-    if (std::abs(keys_[k].first - (first + step * double(k))) > tolerance)
-      throw SceneError(where_, "the animation's key times must be evenly spaced (key " + std::to_string(k + 1) +
-                                   " is at " + text(keys_[k].first) + ", not " + text(first + step * double(k)) + ")");
+  std::vector<double> times;
+  for (const auto& [time, transform] : keys_) times.push_back(time);
+  if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
+    throw SceneError(where_, problem);
 }
 
 unsigned MovingShape::attach(RTCDevice device, RTCScene scene) const {

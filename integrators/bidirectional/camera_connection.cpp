@@ -11,7 +11,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   const PathVertex& v = light[s - 1];
   const Vec2 u_lens = scene.sensor().has_lens() ? sampler.next_2d() : Vec2(0.5f, 0.5f);
   if (v.environment || v.delta_light) return std::nullopt;
-  const auto ws = scene.sensor().sample_Wi({v.p(), v.si.p_error, v.si.ng}, u_lens);
+  const auto ws = scene.sensor().sample_Wi({v.p(), v.si.p_error, v.si.ng, v.si.time}, u_lens);
   if (!ws || !(ws->pdf > 0)) return std::nullopt;
   Color f;
   if (v.kind == PathVertex::Kind::Light) {
@@ -27,6 +27,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, std::span<
   CameraConnection c{ws->raster, v.beta * f * ws->We / ws->pdf, {}};
   c.camera.kind = PathVertex::Kind::Camera;
   c.camera.si.p = ws->p_lens;
+  c.camera.si.time = v.si.time;
   return c;
 }
 

@@ -110,9 +110,7 @@ Contribution evaluate(const Scene& scene, const MltSettings& mlt, PrimarySampleS
   camera.clear();
   // Strategy t = 1 samples its own lens point when it joins the camera.
   if (t >= 2) {
-    Ray ray = scene.sensor().generate_ray(raster, u_lens);
-    ray.time = time;
-    trace_camera_subpath(scene, ray, numbers, settings, camera);
+    trace_camera_subpath(scene, scene.sensor().generate_ray(raster, u_lens, time), numbers, settings, camera);
     if (int(camera.size()) < t) return {raster, {}};
   }
   numbers.start_stream(kLightStream);

@@ -59,7 +59,7 @@ float scatter_density(const Scene& scene, const PathVertex* prev, const PathVert
     case PathVertex::Kind::Camera: {
       float pdf_pos = 0, pdf_dir = 0;
       const Vec3 d = direction_to(cur, next);
-      scene.sensor().pdf_We({cur.p(), d, kInfinity}, &pdf_pos, &pdf_dir);
+      scene.sensor().pdf_We({cur.p(), d, kInfinity, 0, cur.si.time}, &pdf_pos, &pdf_dir);
       // Parallel rays spread over the film's area reach next's surface with
       // the film's density, projected.
       if (scene.sensor().delta_direction()) return parallel_to_area(next, d, pdf_pos, chain_cos);

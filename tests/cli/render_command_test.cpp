@@ -110,7 +110,7 @@ TEST(RenderCommand, ErrorsNameTheProblem) {
               HasSubstr("caustica: error: unknown integrator 'nope'"));
   EXPECT_THAT(run_caustica("render " + kCornell + " -D spp").output, HasSubstr("-D expects name=value, got 'spp'"));
   EXPECT_THAT(run_caustica("render " + kCornell + " -D max_depth=-2").output,
-              HasSubstr("cornell/room.xml:14: parameter 'max_depth' of integrator 'path': must be -1"));
+              HasSubstr("cornell/room.xml:15: parameter 'max_depth' of integrator 'path': must be -1"));
   EXPECT_THAT(run_caustica("render " + kCornell + " --debug-pixel 9999,1").output,
               HasSubstr("--debug-pixel expects X,Y"));
   EXPECT_NE(run_caustica("render /nonexistent.xml").status, 0);

@@ -234,7 +234,7 @@ TEST(MotionBlur, BadAnimationsAreRefusedByName) {
       HasSubstr("only to_world can be animated, not 'to_uv'"));
   EXPECT_THAT(load_error("<scene version='3.0.0'><emitter type='point'><animation name='to_world'>" + key(0, 0) +
                          key(1, 1) + "</animation></emitter></scene>"),
-              HasSubstr("only shapes can move yet: a moving emitter is not rendered"));
+              HasSubstr("only shapes and sensors can move yet: a moving emitter is not rendered"));
   EXPECT_THAT(load_error(scene_xml(still_sphere(0),
                                    "<float name='shutter_open' value='3'/><float "
                                    "name='shutter_close' value='2'/>")),
