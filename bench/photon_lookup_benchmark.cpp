@@ -18,7 +18,7 @@ const std::vector<Photon>& caustic_photons() {
     const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "8"}});
     TracedPhotons traced;
-    trace_photons(*scene, PhotonPaths::Caustic, 1000000, 0, 1, PathSettings{}, traced);
+    trace_photons(*scene, PhotonPaths::Caustic, 1000000, 0, 1, 0, PathSettings{}, traced);
     return traced.all;
   }();
   return photons;

@@ -181,6 +181,8 @@ class Instantiator {
     } else if (animation) {
       if (std::static_pointer_cast<Shape>(plugin)->emitter())
         throw SceneError(animation->where, "a moving shape cannot emit yet (area lights stay still)");
+      if (std::static_pointer_cast<Shape>(plugin)->bounds_media())
+        throw SceneError(animation->where, "a moving shape cannot bound media yet (media stay still)");
       for (auto& [time, transform] : animation->keys) transform = Transform::translate(-render_origin_) * transform;
       auto moving =
           std::make_shared<MovingShape>(std::static_pointer_cast<Shape>(plugin), animation->keys, animation->where);

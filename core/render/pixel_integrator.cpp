@@ -27,7 +27,7 @@ class PixelRun final : public IntegratorRun {
   bool run_pass(PassRange range, const PassTarget& target) override {
     if (!estimator_->begin_pass(range, target.stop)) return false;
     for_each_camera_sample(
-        scene_, seed_, tiles_, range.first, range.count, channels_, nullptr,
+        scene_, seed_, tiles_, range.first, range.count, channels_, nullptr, estimator_->pass_time(),
         [&](Vec2i pixel, uint64_t i, const CameraSample& cs, SampleScratch& s) {
           estimator_->sample(cs.ray, *s.sampler, s.values);
           target.film.add_sample({pixel, i}, s.values, cs.weight);
@@ -42,7 +42,7 @@ class PixelRun final : public IntegratorRun {
     estimator_->begin_pass({pass_containing(index, estimator_->max_pass_samples()).number, index, 1}, nullptr);
     auto sampler = scene_.sensor().sampler()->clone();
     ReplayedSample out{std::vector<float>(channels_), {}};
-    const CameraSample cs = sample_camera_ray(scene_, *sampler, pixel, index, seed_);
+    const CameraSample cs = sample_camera_ray(scene_, *sampler, pixel, index, seed_, estimator_->pass_time());
     estimator_->sample(cs.ray, *sampler, out.values);
     return out;
   }

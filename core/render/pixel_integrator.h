@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -20,6 +21,10 @@ class PixelEstimator {
   // that before the samples could run.
   virtual bool begin_pass(const PassRange& /*range*/, const std::atomic<bool>* /*stop*/) { return true; }
   virtual uint32_t max_pass_samples() const { return 16; }
+  // The time every camera ray of the pass begun last is traced at, when
+  // the pass's paths must share one (core/render/pass_time.h); else each
+  // ray draws its own.
+  virtual std::optional<float> pass_time() const { return std::nullopt; }
   // Estimates the channels along one camera ray; every number it draws
   // comes from `sampler`, which is on the pixel's camera stream.
   virtual void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const = 0;

@@ -20,7 +20,8 @@
 // path's densities (strategy_weight.h), the same as the paper's recursive
 // form. Light subpath i of iteration n draws from (seed, n, i) and the
 // light-tracing splats sum exactly, so the image does not depend on the
-// thread count.
+// thread count. In a moving scene an iteration's subpaths all live at its
+// time (pass_time).
 //
 //   <integrator type="vcm"><string name="mode" value="both"/></integrator>
 
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +40,7 @@
 #include "core/registry/properties.h"
 #include "core/render/camera_sample.h"
 #include "core/render/iterative_integrator.h"
+#include "core/render/pass_time.h"
 #include "core/render/path_settings.h"
 #include "core/scene/scene.h"
 #include "integrators/bidirectional/camera_connection.h"
@@ -92,6 +95,9 @@ class VcmPixels final : public IterationState {
   FilmBuffer light_image_;  // the light-tracing splats (t = 1)
   uint64_t iterations_ = 0;
   float radius_ = 0;
+  // In a moving scene, the iteration's time: its light and camera subpaths
+  // all live at it, so that merges and connections join one instant.
+  std::optional<float> time_;
   // Kept between iterations, so that their memory is reused.
   std::vector<std::vector<PathVertex>> light_paths_;
   std::vector<SplatList> splats_;
@@ -111,6 +117,8 @@ class VertexConnectionMerging final : public IterativeIntegrator {
   std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
     return std::make_unique<VcmPixels>(*this, scene, seed);
   }
+
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     const std::string radius = merge_.radius > 0 ? std::to_string(merge_.radius) : "1/200 of the scene's diagonal";
@@ -155,6 +163,7 @@ bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   light_paths_.resize(size_t(width_) * height_);
   const double paths = double(light_paths_.size());
   merging_.eta = vcm_.mode_ == VcmMode::Connect ? 0 : float(paths * kPi * double(radius_) * radius_);
+  if (scene_.features().motion) time_ = pass_time(iteration, seed_);
   if (!trace_light_subpaths(iteration, stop)) return false;
   if (merging_.eta > 0) keep_vertices(radius_);
   tbb::parallel_for(0, height_, [&](int y) {
@@ -184,7 +193,7 @@ bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>
     for (size_t i = b * kBlock; i < std::min(light_paths_.size(), (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
       std::vector<PathVertex>& light = light_paths_[i];
-      trace_light_subpath(scene_, *sampler, 0, settings, light);
+      trace_light_subpath(scene_, *sampler, time_.value_or(0), settings, light);
       compute_densities(scene_, light);
       if (!merging_.connections) continue;
       for (int s = 1; s <= int(light.size()); ++s) {
@@ -227,7 +236,7 @@ void VcmPixels::keep_vertices(float radius) {
 void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration, float radius) {
   thread_local std::vector<PathVertex> camera;
   const PathSettings& settings = vcm_.settings_;
-  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
+  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_, time_);
   trace_camera_subpath(scene_, cs.ray, sampler, settings, camera);
   compute_densities(scene_, camera);
   const std::vector<PathVertex>& light = light_paths_[size_t(pixel.y) * width_ + pixel.x];

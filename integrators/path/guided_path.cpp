@@ -83,6 +83,8 @@ class GuidedPathIntegrator final : public PixelIntegrator {
 
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
+  // Each path keeps its own time; what guides it is learned from all of them.
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     const std::string pointless = guiding_pointless(scene, path_.max_depth);
@@ -143,7 +145,7 @@ bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) 
   const uint64_t first = (uint64_t(1) << pass) - 1, count = uint64_t(1) << pass;
   ++passes_alone_;
   return for_each_camera_sample(
-      scene_, seed_, make_tiles(film.width(), film.height()), first, count, 3, stop,
+      scene_, seed_, make_tiles(film.width(), film.height()), first, count, 3, stop, std::nullopt,
       [&](Vec2i, uint64_t, const CameraSample& cs, SampleScratch& s) { sample(cs.ray, *s.sampler, s.values); },
       [](const Tile&) {});
 }

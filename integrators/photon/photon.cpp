@@ -9,7 +9,9 @@
 // scene cannot have caustic paths (SceneFeatures) no photon is traced and
 // the integrator costs what path costs. In spectral mode a round's photons
 // and the camera paths of its pass share the round's wavelengths
-// (pass_wavelengths), so that photons meet BSDFs at their own wavelengths.
+// (pass_wavelengths), so that photons meet BSDFs at their own wavelengths;
+// in a moving scene they share the round's time (pass_time), so that
+// photons land where the scene stands when the camera paths gather them.
 //
 // max_depth limits the whole path, a photon's segments included; rr_depth
 // counts the vertices before Russian roulette on camera and photon paths
@@ -24,6 +26,7 @@
 
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
+#include "core/render/pass_time.h"
 #include "core/render/path_settings.h"
 #include "core/render/pixel_integrator.h"
 #include "core/render/sample_wavelengths.h"
@@ -65,6 +68,7 @@ class CausticRounds final : public PixelEstimator {
   // Without photons there is nothing to refine between passes.
   uint32_t max_pass_samples() const override;
   bool begin_pass(const PassRange& range, const std::atomic<bool>* stop) override;
+  std::optional<float> pass_time() const override { return round_time_; }
   void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override {
     if (!enabled_) return "(photon pass skipped)";
@@ -81,6 +85,7 @@ class CausticRounds final : public PixelEstimator {
   float initial_radius_;
   std::optional<uint32_t> round_;
   std::optional<Wavelengths> round_wavelengths_;  // spectral mode, with photons
+  std::optional<float> round_time_;               // moving scenes, with photons
   uint32_t rounds_ = 0;
   TracedPhotons traced_;  // kept between rounds, so that its memory is reused
   PhotonMap map_;
@@ -103,6 +108,7 @@ class PhotonIntegrator final : public PixelIntegrator {
 
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     const std::string media = scene.features().media
@@ -116,7 +122,8 @@ class PhotonIntegrator final : public PixelIntegrator {
            scene.features().caustics_reason + "), path tracing for the rest" + media +
            (scene.features().spectral ? "; spectral: each round's photons and its pass's camera paths share its "
                                         "wavelengths"
-                                      : "");
+                                      : "") +
+           (scene.features().motion ? "; motion: each round's photons and its pass's camera paths share its time" : "");
   }
 
   std::string distributed_note() const override {
@@ -145,8 +152,9 @@ bool CausticRounds::begin_pass(const PassRange& range, const std::atomic<bool>* 
   if (!enabled_ || round_ == pass) return true;
   const uint64_t photons = uint64_t(settings_.photon_.photons);
   if (scene_.features().spectral) round_wavelengths_ = pass_wavelengths(pass, seed_);
-  if (!trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, settings_.settings_, traced_, stop,
-                     round_wavelengths_ ? &*round_wavelengths_ : nullptr))
+  if (scene_.features().motion) round_time_ = caustica::pass_time(pass, seed_);
+  if (!trace_photons(scene_, PhotonPaths::Caustic, photons, pass, seed_, round_time_.value_or(0), settings_.settings_,
+                     traced_, stop, round_wavelengths_ ? &*round_wavelengths_ : nullptr))
     return false;
   round_ = pass;
   ++rounds_;

@@ -46,9 +46,9 @@ class PhotonRecorder {
   const Wavelengths* wavelengths_;
 };
 
-void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const PathSettings& settings,
+void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, float time, const PathSettings& settings,
                   std::vector<Photon>& out, const Wavelengths* round_wavelengths) {
-  const auto start = start_light_path(scene, sampler, 0);
+  const auto start = start_light_path(scene, sampler, time);
   if (!start) return;
   SampleWavelengths w(round_wavelengths);
   Wavelengths* wavelengths = w.get();
@@ -60,7 +60,7 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, const 
 
 }  // namespace
 
-bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
+bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed, float time,
                    const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop,
                    const Wavelengths* wavelengths) {
   const auto stopped = [&] { return stop && stop->load(); };
@@ -73,7 +73,7 @@ bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_
     auto sampler = scene.sensor().sampler()->clone();
     for (uint64_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(round), i, seed);
-      trace_photon(scene, kind, *sampler, settings, found[b], wavelengths);
+      trace_photon(scene, kind, *sampler, time, settings, found[b], wavelengths);
     }
   });
   if (stopped()) return false;

@@ -40,8 +40,9 @@ struct TracedPhotons {
 // camera within settings.max_depth are not kept. The photons land in
 // out.all; false, once `stop` (may be null) turns true: a production-size
 // round takes long. With `wavelengths` (spectral mode) every photon carries
-// its power at them, the round's wavelengths.
-bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed,
+// its power at them, the round's wavelengths. Every photon is traced at
+// `time` (see Ray::time), the round's.
+bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed, float time,
                    const PathSettings& settings, TracedPhotons& out, const std::atomic<bool>* stop = nullptr,
                    const Wavelengths* wavelengths = nullptr);
 

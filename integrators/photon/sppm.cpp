@@ -20,7 +20,9 @@
 // In spectral mode each iteration draws one set of wavelengths
 // (pass_wavelengths) that its photons and camera paths share, since a
 // photon's power must meet the BSDF at its own wavelengths; the passes'
-// sets spread evenly over the spectrum.
+// sets spread evenly over the spectrum. In a moving scene they share the
+// iteration's time (pass_time) the same way, so that photons land where
+// the scene stands when the camera paths gather them.
 // Photon rounds and the camera pass run in parallel and are deterministic
 // for a seed.
 //
@@ -50,6 +52,7 @@
 #include "core/render/camera_sample.h"
 #include "core/render/direct_light.h"
 #include "core/render/iterative_integrator.h"
+#include "core/render/pass_time.h"
 #include "core/render/path_settings.h"
 #include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
@@ -145,7 +148,7 @@ class SppmPixels final : public IterationState {
   std::string summary() const override;
 
  private:
-  void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration,
+  void iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration, std::optional<float> time,
                      const Wavelengths* wavelengths);
 
   const StochasticProgressivePhotonMapping& settings_;
@@ -170,6 +173,7 @@ class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
 
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
+  bool renders_motion() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("sppm: ") + std::to_string(photon_.photons) +
@@ -179,7 +183,8 @@ class StochasticProgressivePhotonMapping final : public IterativeIntegrator {
                                      "photons scatter in them and are kept on surfaces only"
                                    : "") +
            (scene.features().spectral ? "; spectral: each iteration's photons and camera paths share its wavelengths"
-                                      : "");
+                                      : "") +
+           (scene.features().motion ? "; motion: each iteration's photons and camera paths share its time" : "");
   }
 
  private:
@@ -200,15 +205,17 @@ bool SppmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   std::optional<Wavelengths> wavelengths;
   if (scene_.features().spectral) wavelengths = pass_wavelengths(iteration, seed_);
   const Wavelengths* w = wavelengths ? &*wavelengths : nullptr;
+  std::optional<float> time;
+  if (scene_.features().motion) time = pass_time(iteration, seed_);
   if (!trace_photons(scene_, PhotonPaths::Indirect, uint64_t(settings_.photon_.photons), iteration, seed_,
-                     settings_.settings_, traced_, stop, w))
+                     time.value_or(0), settings_.settings_, traced_, stop, w))
     return false;
   map_.build(traced_.all, max_radius);
   const PhotonMap& map = map_;
   const int height = int(pixels_.size() / size_t(width_));
   tbb::parallel_for(0, height, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();
-    for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration, w);
+    for (int x = 0; x < width_; ++x) iterate_pixel(map, *sampler, {x, y}, iteration, time, w);
   });
   ++iterations_;
   return true;
@@ -232,9 +239,9 @@ Color SppmPixels::estimate(Vec2i pixel) const {
 // The camera path's estimates enter the pixel in RGB, converted at its own
 // copy of the iteration's wavelengths (which dispersion may terminate).
 void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pixel, uint64_t iteration,
-                               const Wavelengths* iteration_wavelengths) {
+                               std::optional<float> time, const Wavelengths* iteration_wavelengths) {
   PixelState& px = pixels_[size_t(pixel.y) * width_ + pixel.x];
-  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_);
+  const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_, time);
   SampleWavelengths w(iteration_wavelengths);
   VisiblePoint visible(scene_, map, sampler, settings_.settings_, px, w.get());
   random_walk(scene_, cs.ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings_.settings_), sampler,

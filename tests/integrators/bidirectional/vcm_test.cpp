@@ -23,8 +23,8 @@ namespace {
 using testing::HasSubstr;
 
 constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 16;
-const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
-                               "cornell-box-glossy", "cornell-box-phong", "cornell-box-textured"};
+const char* const kScenes[] = {"cornell-box",       "cornell-box-glass",    "cornell-box-mirror", "cornell-box-glossy",
+                               "cornell-box-phong", "cornell-box-textured", "cornell-box-motion"};
 struct Mode {
   const char* integrator;
   uint32_t iterations;

@@ -25,8 +25,8 @@ constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 32;
 // what they learnt; fewer leave the glossy box's region means skewed by
 // rare bright paths, which a t-test on 32 runs does not allow for.
 constexpr uint32_t kSpp = 96;
-const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
-                               "cornell-box-glossy", "cornell-box-phong", "cornell-box-textured"};
+const char* const kScenes[] = {"cornell-box",       "cornell-box-glass",    "cornell-box-mirror", "cornell-box-glossy",
+                               "cornell-box-phong", "cornell-box-textured", "cornell-box-motion"};
 constexpr int kTests = int(std::size(kScenes)) * kRegionsPerSide * kRegionsPerSide;
 
 class GuidedAgreement : public testing::TestWithParam<const char*> {};

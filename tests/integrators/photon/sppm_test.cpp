@@ -25,8 +25,8 @@ namespace {
 using testing::HasSubstr;
 
 constexpr int kRuns = 10;
-const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
-                               "cornell-box-glossy", "cornell-box-fog",   "cornell-box-smoke"};
+const char* const kScenes[] = {"cornell-box",     "cornell-box-glass", "cornell-box-mirror", "cornell-box-glossy",
+                               "cornell-box-fog", "cornell-box-smoke", "cornell-box-motion"};
 
 double mean_abs_difference(const std::vector<test::RegionEstimate>& a, const std::vector<test::RegionEstimate>& b) {
   double sum = 0;
