@@ -230,8 +230,8 @@ class Instantiator {
   };
 
   // <animation name="to_world"> with <transform time="..."> keys, on a
-  // sensor or on a shape of the scene's own (not in a group, nor a group or
-  // an instance).
+  // sensor or on a shape of the scene's own (an instance included; not in a
+  // group, nor a group or a csg solid).
   Animation read_animation(const XmlNode& animation, const XmlNode& owner, const std::string& type) {
     animation.check_attributes({"name"});
     if (required_attribute(animation, "name") != "to_world")
@@ -240,7 +240,7 @@ class Instantiator {
     if (owner.tag != "shape" && owner.tag != "sensor")
       throw SceneError(animation.where,
                        "only shapes and sensors can move yet: a moving " + owner.tag + " is not rendered");
-    if (type == "shapegroup" || type == "instance" || type == "csg" || in_group_ > 0)
+    if (type == "shapegroup" || type == "csg" || in_group_ > 0)
       throw SceneError(animation.where, "a " + (in_group_ > 0 ? "shape in a shapegroup" : type) +
                                             " cannot move yet: animate a shape of the scene's own");
     Animation out{{}, animation.where};

@@ -43,6 +43,7 @@ class InstanceShape final : public Shape {
   }
 
   bool is_instance() const override { return true; }
+  RTCScene instanced_scene(RTCDevice device) const override { return group_->rtc_scene(device); }
 
   unsigned attach(RTCDevice device, RTCScene scene) const override {
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);

@@ -35,7 +35,10 @@ void MovingShape::set_shutter(double open, double close) {
 }
 
 unsigned MovingShape::attach(RTCDevice device, RTCScene scene) const {
-  RTCScene own = nullptr;
+  // A moving instance moves its group's scene, whose hits it describes
+  // itself (with its own placement, the identity); another shape is placed
+  // alone in a scene of its own.
+  RTCScene own = local_->instanced_scene(device);
   for (const auto& [d, s] : built_)
     if (d == device) own = s;
   if (!own) {

@@ -23,7 +23,8 @@ namespace caustica {
 //   </shape>
 //
 // The shape is built in its own space and placed by an Embree instance
-// with one time step per key (quaternion motion: scale and shear, rotation
+// with one time step per key (a moving instance places its group's scene
+// that way) (quaternion motion: scale and shear, rotation
 // and translation interpolated apart, as AnimatedTransform does); a ray
 // meets it where it is at the ray's time. The keys' times must be
 // increasing and evenly spaced, the first at the sensor's shutter_open and

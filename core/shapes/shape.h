@@ -54,6 +54,9 @@ class Shape : public Plugin {
   virtual bool is_group() const { return false; }
   // An instance of a shapegroup: it cannot carry an emitter, nor sit in a group.
   virtual bool is_instance() const { return false; }
+  // The Embree scene an instance places (its group's), for a moving
+  // instance to place with its own motion; null for other shapes.
+  virtual RTCScene instanced_scene(RTCDevice /*device*/) const { return nullptr; }
   // A shape whose place changes over the shutter interval (MovingShape).
   virtual bool moves() const { return false; }
   // The BsdfLobe flags of what the shape reflects (an instance's are its group's).

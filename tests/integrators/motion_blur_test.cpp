@@ -89,6 +89,26 @@ TEST(MotionBlur, TheImageIsTheTimeAverageOfTheStillScenes) {
   EXPECT_GT(moving_total, 0);
 }
 
+// An instance moved by the keys that move the sphere directly: the same
+// image, region by region within 4 standard errors (the two renders share
+// their seeds, so they differ far less than that; 36 regions).
+TEST(MotionBlur, AMovingInstanceMovesItsGroup) {
+  const std::string keys = key(2, -0.6, 0) + key(2.5, 0, 30) + key(3, 0.6, 60);
+  const LoadedScene instance = test::scene_from_xml(scene_xml(
+      "<shape type='shapegroup' id='ball'><shape type='sphere'><float name='radius' value='0.3'/></shape></shape>"
+      "<shape type='instance'><ref id='ball'/><animation name='to_world'>" +
+          keys + "</animation></shape>",
+      kShutter));
+  ASSERT_TRUE(instance->features().motion);
+  const LoadedScene sphere = test::scene_from_xml(scene_xml(moving_sphere(keys), kShutter));
+  const auto regions = test::grid_regions(24, 24, 6);
+  const auto a = test::estimate_regions(instance, regions, 16, 4, 500);
+  const auto b = test::estimate_regions(sphere, regions, 16, 4, 500);
+  for (size_t r = 0; r < regions.size(); ++r)
+    EXPECT_LT(std::abs(test::difference_score(a[r], b[r])), 4)
+        << "region " << r << ": instance " << a[r].mean << ", sphere " << b[r].mean;
+}
+
 // A white disk of radius 0.3 seen from straight above by an orthographic
 // camera (the view spans +-1; image right is +x, image down is -y), its
 // centre moving along y = 0.1 through x = -0.5, -0.3 and 0.4 at the
@@ -290,6 +310,15 @@ TEST(MotionBlur, BadAnimationsAreRefusedByName) {
                                        key(2, 0) + key(3, 1) + "</animation></shape>",
                                    kShutter)),
               HasSubstr("a moving shape cannot bound media yet"));
+  const std::string moving = "<animation name='to_world'>" + key(2, 0) + key(3, 1) + "</animation>";
+  EXPECT_THAT(load_error(scene_xml("<shape type='csg'><string name='operation' value='union'/><shape type='sphere'/>"
+                                   "<shape type='cube'/>" +
+                                       moving + "</shape>",
+                                   kShutter)),
+              HasSubstr("a csg cannot move yet: animate a shape of the scene's own"));
+  EXPECT_THAT(load_error(scene_xml(
+                  "<shape type='shapegroup' id='g'><shape type='sphere'>" + moving + "</shape></shape>", kShutter)),
+              HasSubstr("a shape in a shapegroup cannot move yet"));
   EXPECT_THAT(
       load_error(scene_xml(
           "<shape type='sphere'><animation name='to_uv'>" + key(2, 0) + key(3, 1) + "</animation></shape>", kShutter)),
