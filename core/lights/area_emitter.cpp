@@ -50,7 +50,7 @@ class AreaEmitter final : public Emitter {
     return dot(w, si.ng) > 0 ? radiance_->eval(si.uv) : Color();
   }
 
-  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float) const override {
     const PositionSample ps = shape_->sample_position(u_pos);
     if (ps.pdf <= 0) return std::nullopt;
     const Vec3 local = square_to_cosine_hemisphere(u_dir);

@@ -29,7 +29,7 @@ class ConstantEmitter final : public Emitter {
 
   Color Le_infinite(Vec3) const override { return radiance_; }
 
-  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float) const override {
     const Vec3 d = -square_to_uniform_sphere(u_dir);
     return LeSample{{disk_.origin(d, u_pos), d, kInfinity}, {}, radiance_, disk_.pdf(), uniform_sphere_pdf(), {}};
   }

@@ -41,7 +41,7 @@ class DirectionalEmitter final : public Emitter {
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
 
-  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2) const override {
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2, float) const override {
     return LeSample{{disk_.origin(direction_, u_pos), direction_, kInfinity}, {}, irradiance_, disk_.pdf(), 1, {}};
   }
 

@@ -78,12 +78,16 @@ class Emitter : public Plugin {
   // Radiance of an infinite emitter arriving along -d.
   virtual Color Le_infinite(Vec3) const { return {}; }
 
-  virtual std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const = 0;
+  // An emitted ray; a moving light emits from where it is at `time` (see
+  // Ray::time), and the caller gives the ray that time.
+  virtual std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float time = 0) const = 0;
   virtual void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const = 0;
   virtual Color power() const = 0;
 
   virtual bool is_delta() const { return false; }
   virtual bool is_infinite() const { return false; }
+  // Whether the light moves over the shutter (MovingEmitter).
+  virtual bool moves() const { return false; }
   // An environment a ray leaving the scene can meet: infinitely far and
   // not a delta in direction (a directional light is met by no ray).
   bool is_environment() const { return is_infinite() && !is_delta(); }

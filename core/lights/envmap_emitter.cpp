@@ -90,7 +90,7 @@ class EnvmapEmitter final : public Emitter {
 
   Color Le_infinite(Vec3 d) const override { return texel(to_uv(d)); }
 
-  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir) const override {
+  std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float) const override {
     if (!distribution_) return std::nullopt;
     float pdf_uv = 0;
     const Vec2 uv = distribution_->sample(u_dir, &pdf_uv);

@@ -32,7 +32,7 @@ class PointEmitter final : public Emitter {
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
 
-  std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir) const override {
+  std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir, float) const override {
     const Vec3 d = square_to_uniform_sphere(u_dir);
     return LeSample{{position_, d, kInfinity}, {}, intensity_, 1, uniform_sphere_pdf(), {}};
   }

@@ -57,7 +57,7 @@ class SpotEmitter final : public Emitter {
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
 
-  std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir) const override {
+  std::optional<LeSample> sample_Le(Vec2, Vec2 u_dir, float) const override {
     const Vec3 d = normalize(to_world_.vector(square_to_uniform_cone(u_dir, cos_cutoff_)));
     const Color I = emitted(d);
     if (I.is_black()) return std::nullopt;

@@ -10,6 +10,7 @@
 #include "core/camera/moving_sensor.h"
 #include "core/errors/interrupted.h"
 #include "core/lights/emitter.h"
+#include "core/lights/moving_emitter.h"
 #include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
@@ -54,6 +55,20 @@ PropertyValue parse_value_element(const XmlNode& node, ValueKind kind) {
 // Instantiates plugins from nodes, each object once, resolving <ref> by id.
 class Instantiator {
  public:
+  // An <animation>'s keys, in the order written, and where it was written.
+  struct Animation {
+    std::vector<std::pair<double, Transform>> keys;
+    SourceLocation where;
+  };
+
+  // Throws, naming the animation, if its keys do not span [open, close] evenly.
+  static void check_keys(const Animation& animation, double open, double close) {
+    std::vector<double> times;
+    for (const auto& [time, transform] : animation.keys) times.push_back(time);
+    if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
+      throw SceneError(animation.where, problem);
+  }
+
   Instantiator(const XmlNode& root, Vec3d render_origin, const std::string& source)
       : render_origin_(render_origin), resolver_(std::filesystem::path(source).parent_path()) {
     collect_ids(root, true);
@@ -107,6 +122,7 @@ class Instantiator {
   int textures = 0;                                  // texture plugins built, for the scene features
   std::vector<GivenSpectrum> spectra;                // colours given as spectra, for the scene features
   std::vector<std::shared_ptr<MovingShape>> moving;  // timed against the shutter once the sensor is built
+  std::vector<Animation> moving_emitters;            // so are these
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -151,6 +167,11 @@ class Instantiator {
       if (node.tag == "sensor") {
         check_keys(*animation, props.get_float("shutter_open"), props.get_float("shutter_close"));
         props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
+      } else if (node.tag == "emitter") {
+        // Timed against the shutter at the end; placed by its first key now.
+        if (animation->keys.size() < 2) throw SceneError(animation->where, shutter_keys_problem({}, 0, 1));
+        moving_emitters.push_back(*animation);
+        props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
       } else {
         props.set_render_origin(Vec3d());
       }
@@ -169,12 +190,15 @@ class Instantiator {
     for (const std::string& name : info->ignored)
       if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
-    if (animation && node.tag == "sensor") {
+    if (animation && (node.tag == "sensor" || node.tag == "emitter")) {
       std::vector<Transform> keys;
       for (const auto& [time, transform] : animation->keys)
         keys.push_back(Transform::translate(-render_origin_) * transform);
       try {
-        plugin = std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
+        if (node.tag == "sensor")
+          plugin = std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
+        else
+          plugin = std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys);
       } catch (const std::invalid_argument& e) {
         throw SceneError(animation->where, e.what());
       }
@@ -224,11 +248,6 @@ class Instantiator {
     }
   }
 
-  struct Animation {
-    std::vector<std::pair<double, Transform>> keys;
-    SourceLocation where;
-  };
-
   // <animation name="to_world"> with <transform time="..."> keys, on a
   // sensor or on a shape of the scene's own (an instance included; not in a
   // group, nor a group or a csg solid).
@@ -237,9 +256,9 @@ class Instantiator {
     if (required_attribute(animation, "name") != "to_world")
       throw SceneError(animation.where, "only to_world can be animated, not '" +
                                             required_attribute(animation, "name").substr(0, 40) + "'");
-    if (owner.tag != "shape" && owner.tag != "sensor")
+    if (owner.tag != "shape" && owner.tag != "sensor" && owner.tag != "emitter")
       throw SceneError(animation.where,
-                       "only shapes and sensors can move yet: a moving " + owner.tag + " is not rendered");
+                       "only shapes, sensors and emitters can move: a moving " + owner.tag + " means nothing");
     if (type == "shapegroup" || type == "csg" || in_group_ > 0)
       throw SceneError(animation.where, "a " + (in_group_ > 0 ? "shape in a shapegroup" : type) +
                                             " cannot move yet: animate a shape of the scene's own");
@@ -253,13 +272,6 @@ class Instantiator {
       out.keys.emplace_back(time, parse_transform(key));
     }
     return out;
-  }
-
-  static void check_keys(const Animation& animation, double open, double close) {
-    std::vector<double> times;
-    for (const auto& [time, transform] : animation.keys) times.push_back(time);
-    if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
-      throw SceneError(animation.where, problem);
   }
 
   // A shape with a place of its own (not a group, nor an instance, which a
@@ -371,6 +383,8 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
   for (const auto& moving : inst.moving) moving->set_shutter(sensor->shutter_open(), sensor->shutter_close());
+  for (const auto& animation : inst.moving_emitters)
+    Instantiator::check_keys(animation, sensor->shutter_open(), sensor->shutter_close());
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);

@@ -16,7 +16,7 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                           float u_select, Vec2 u_light, float n_light, float n_bsdf, const Wavelengths* wavelengths,
                           const ScatterDensity* density) {
-  const auto light = choose_light(scene, {si.p, si.p_error, si.ng}, u_select, u_light);
+  const auto light = choose_light(scene, {si.p, si.p_error, si.ng, si.time}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
   const auto [bsdf_f, bsdf_pdf] = bsdf.eval_and_pdf(wo, ls.wi);

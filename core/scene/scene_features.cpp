@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/bsdf/bsdf.h"
 #include "core/media/medium.h"
@@ -142,6 +144,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
     f.point_lights += e->is_delta() && !e->is_infinite();
     f.directional_lights += e->is_delta() && e->is_infinite();
     f.environment_lights += e->is_environment();
+    f.moving_lights += e->moves();
   }
   bool receiver = false;
   for (const auto& s : scene.shapes()) {
@@ -150,7 +153,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
     receiver = receiver || (s->lobes() & ~(kDelta | kNull));
   }
   f.moving_camera = scene.sensor().moves();
-  f.motion = f.moving_shapes > 0 || f.moving_camera;
+  f.motion = f.moving_shapes > 0 || f.moving_lights > 0 || f.moving_camera;
   int specular_shapes = 0;
   const Shape* lit_specular = nullptr;
   const std::set<const Shape*> met = met_by_light_rays(scene);
@@ -204,14 +207,18 @@ std::string describe(const SceneFeatures& f) {
     if (f.camera_in_medium) out << "; the camera sits in one";
   }
   out << "\nmotion: ";
-  if (f.motion)
-    out << (f.moving_shapes == 0   ? std::string()
-            : f.moving_shapes == 1 ? "1 shape moves"
-                                   : std::to_string(f.moving_shapes) + " shapes move")
-        << (f.moving_shapes > 0 && f.moving_camera ? " and " : "") << (f.moving_camera ? "the camera moves" : "")
-        << " during the shutter; camera rays draw a time";
-  else
+  if (f.motion) {
+    const auto count = [](int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+    std::vector<std::string> what;
+    if (f.moving_shapes > 0) what.push_back(count(f.moving_shapes, "shape"));
+    if (f.moving_lights > 0) what.push_back(count(f.moving_lights, "light"));
+    if (f.moving_camera) what.push_back("the camera");
+    out << "moving during the shutter: ";
+    for (size_t i = 0; i < what.size(); ++i) out << (i == 0 ? "" : i + 1 == what.size() ? " and " : ", ") << what[i];
+    out << "; camera rays draw a time";
+  } else {
     out << "none (nothing moves; no time is drawn)";
+  }
   out << "\n" << describe_transport(f) << "\n";
   return out.str();
 }

@@ -36,7 +36,7 @@ struct SceneFeatures {
   // Shapes, or the camera, moving over the shutter interval: camera rays
   // then draw a time, and only integrators that follow it may render the
   // scene.
-  int moving_shapes = 0;
+  int moving_shapes = 0, moving_lights = 0;
   bool moving_camera = false;
   bool motion = false;
   // Spectral transport: whether paths carry wavelengths, and why (what the

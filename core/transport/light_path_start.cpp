@@ -9,7 +9,7 @@ std::optional<LightPathStart> start_light_path(const Scene& scene, Sampler& samp
   const Vec2 u_pos = sampler.next_2d(), u_dir = sampler.next_2d();
   const auto choice = scene.light_selection().sample(u_select);
   if (!choice) return std::nullopt;
-  auto le = choice->emitter->sample_Le(u_pos, u_dir);
+  auto le = choice->emitter->sample_Le(u_pos, u_dir, time);
   if (!le || !(le->pdf_pos > 0) || !(le->pdf_dir > 0) || le->Le.is_black()) return std::nullopt;
   le->ray.time = time;
   const float cos = le->n == Vec3() ? 1 : abs_dot(le->n, le->ray.d);

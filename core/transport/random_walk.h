@@ -52,7 +52,7 @@ struct Arrival {
 
 // How a ray sampled by `bs` leaves `si`.
 inline Arrival arrival_from(const SurfaceInteraction& si, const BsdfSample& bs) {
-  return {bs.is_delta(), bs.pdf, {si.p, si.p_error, si.ng}};
+  return {bs.is_delta(), bs.pdf, {si.p, si.p_error, si.ng, si.time}};
 }
 
 struct WalkVertex {

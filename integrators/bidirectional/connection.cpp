@@ -48,7 +48,7 @@ Color connect(const Scene& scene, std::span<const PathVertex> light, int s, std:
     const Vec2 u = sampler.next_2d();
     const auto choice = scene.light_selection().sample(u_select);
     if (!choice) return {};
-    const auto ls = choice->emitter->sample_Li({cv.p(), cv.si.p_error, cv.si.ng}, u);
+    const auto ls = choice->emitter->sample_Li({cv.p(), cv.si.p_error, cv.si.ng, cv.si.time}, u);
     if (!ls || !(ls->pdf > 0) || ls->Li.is_black()) return {};
     // The value and both densities at the camera end from one frame
     // transform (ls->wi is direction_to(cv, the light point) bit for bit).

@@ -38,7 +38,8 @@ float emission_density(const PathVertex& light, const PathVertex& next, float ch
     light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
     return parallel_to_area(next, light.w_env, pdf_pos, chain_cos);
   }
-  light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity}, light.si.ng, &pdf_pos, &pdf_dir);
+  light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity, 0, light.si.time}, light.si.ng, &pdf_pos,
+                        &pdf_dir);
   return solid_angle_to_area(light, next, pdf_dir, chain_cos);
 }
 
@@ -49,7 +50,7 @@ float light_origin_density(const Scene& scene, const PathVertex& v) {
     v.emitter->pdf_Le({{}, -v.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
     return pmf * pdf_dir;
   }
-  v.emitter->pdf_Le({v.p(), v.si.ng, kInfinity}, v.si.ng, &pdf_pos, &pdf_dir);
+  v.emitter->pdf_Le({v.p(), v.si.ng, kInfinity, 0, v.si.time}, v.si.ng, &pdf_pos, &pdf_dir);
   return pmf * pdf_pos;
 }
 

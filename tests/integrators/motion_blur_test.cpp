@@ -323,9 +323,9 @@ TEST(MotionBlur, BadAnimationsAreRefusedByName) {
       load_error(scene_xml(
           "<shape type='sphere'><animation name='to_uv'>" + key(2, 0) + key(3, 1) + "</animation></shape>", kShutter)),
       HasSubstr("only to_world can be animated, not 'to_uv'"));
-  EXPECT_THAT(load_error("<scene version='3.0.0'><emitter type='point'><animation name='to_world'>" + key(0, 0) +
-                         key(1, 1) + "</animation></emitter></scene>"),
-              HasSubstr("only shapes and sensors can move yet: a moving emitter is not rendered"));
+  EXPECT_THAT(load_error("<scene version='3.0.0'><bsdf type='diffuse'><animation name='to_world'>" + key(0, 0) +
+                         key(1, 1) + "</animation></bsdf></scene>"),
+              HasSubstr("only shapes, sensors and emitters can move: a moving bsdf means nothing"));
   EXPECT_THAT(load_error(scene_xml(still_sphere(0),
                                    "<float name='shutter_open' value='3'/><float "
                                    "name='shutter_close' value='2'/>")),
@@ -360,7 +360,8 @@ TEST(MotionBlur, IntegratorsThatCannotFollowATimeSaySo) {
               HasSubstr("integrator 'radiosity' does not render moving shapes or cameras yet, which moving.xml has; "
                         "render it with aov, bdpt, direct, guided_path, mlt, path, photon, ptracer, sppm, vcm, "
                         "volpath"));
-  EXPECT_THAT(describe(moving->features()), HasSubstr("motion: 1 shape moves during the shutter"));
+  EXPECT_THAT(describe(moving->features()),
+              HasSubstr("motion: moving during the shutter: 1 shape; camera rays draw a time"));
 }
 
 }  // namespace

@@ -135,7 +135,7 @@ TEST(MovingCamera, BadKeysAreRefusedByName) {
                          "</transform><transform time='2'>" + kLook + "</transform></animation>"),
               HasSubstr("the animation's keys run from 0 to 2, and must span the sensor's shutter, from 0 to 1"));
   EXPECT_THAT(describe(test::scene_from_xml(sunlit("path", keyed({kLook, kLook}), "", ""))->features()),
-              HasSubstr("motion: the camera moves during the shutter"));
+              HasSubstr("motion: moving during the shutter: the camera;"));
 }
 
 }  // namespace
