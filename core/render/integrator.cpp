@@ -30,10 +30,6 @@ void Integrator::check_scene(const Scene& scene) const {
     throw std::invalid_argument(
         "integrator '" + plugin_name() + "' does not render moving shapes or cameras yet, which " + scene.source() +
         " has; render it with " + integrators_that([](const Integrator& i) { return i.renders_motion(); }));
-  if (f.motion && f.medium_walk)
-    throw std::invalid_argument(
-        scene.source() +
-        ": moving shapes and cameras cannot be rendered with participating media or null surfaces yet");
   if (!f.spectral) return;
   const std::string spectral = "spectral transport (" + f.spectral_reason + ")";
   if (!renders_spectral())

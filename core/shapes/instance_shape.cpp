@@ -62,7 +62,7 @@ class InstanceShape final : public Shape {
 
   SurfaceInteraction interaction(const Ray& ray, const RayHit& hit) const override {
     // Not normalised: t means the same along both rays.
-    const Ray local{to_group_.point(ray.o), to_group_.vector(ray.d), ray.t_max, ray.t_min};
+    const Ray local{to_group_.point(ray.o), to_group_.vector(ray.d), ray.t_max, ray.t_min, ray.time};
     SurfaceInteraction si = group_->shape(hit.geom).interaction(local, hit);
     const Vec3 p_local = si.p;
     si.p = to_world_.point(p_local);

@@ -22,9 +22,9 @@ Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction&
   return f * tr * ls.Li * (light->mis_weight(scatter_pdf(density, ls.wi, bsdf_pdf), 1, n_bsdf) / light->pdf);
 }
 
-Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,
-                                          float u_select, Vec2 u_light) {
-  const auto light = choose_light(scene, {p, {}, {}}, u_select, u_light);
+Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, float time, const Medium& medium, Vec3 wo,
+                                          Sampler& sampler, float u_select, Vec2 u_light) {
+  const auto light = choose_light(scene, {p, {}, {}, time}, u_select, u_light);
   if (!light) return {};
   const LiSample& ls = light->ls;
   const float phase = medium.phase().eval(wo, ls.wi);
@@ -32,6 +32,7 @@ Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medi
   // A point in a medium has no error to step off: the ray leaves from it.
   SurfaceInteraction at;
   at.p = p;
+  at.time = time;
   const Ray shadow = shadow_ray(at, ls);
   const Color tr = shadow_transmittance(scene, shadow, &medium, sampler);
   if (tr.is_black()) return {};

@@ -22,9 +22,9 @@ Color sample_direct_light_in_media(const Scene& scene, const SurfaceInteraction&
                                    const Medium* arrived_in, Sampler& sampler, float u_select, Vec2 u_light,
                                    float n_bsdf = 1, const ScatterDensity* density = nullptr);
 
-// At a scattering event at p inside `medium`, weighed against sampling its
-// phase function.
-Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, const Medium& medium, Vec3 wo, Sampler& sampler,
-                                          float u_select, Vec2 u_light);
+// At a scattering event at p inside `medium`, at the path's `time`,
+// weighed against sampling its phase function.
+Color sample_direct_light_at_medium_point(const Scene& scene, Vec3 p, float time, const Medium& medium, Vec3 wo,
+                                          Sampler& sampler, float u_select, Vec2 u_light);
 
 }  // namespace caustica

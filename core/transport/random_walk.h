@@ -75,6 +75,7 @@ struct MediumVertex {
   int64_t segments;
   bool last;
   const Arrival& arrival;
+  float time;  // the path's (see Ray::time)
 };
 
 struct WalkEscape {
@@ -128,14 +129,15 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       if (t_scatter) {
         const Vec3 p = ray.at(*t_scatter);
         const Vec3 wo = -normalize(ray.d);
-        if (visitor.at_medium_vertex(MediumVertex{p, wo, *medium, beta, segments, last, arrival}) == WalkAction::Stop ||
+        if (visitor.at_medium_vertex(MediumVertex{p, wo, *medium, beta, segments, last, arrival, ray.time}) ==
+                WalkAction::Stop ||
             last)
           return;
         const auto ps = medium->phase().sample(wo, sampler.next_2d());
         if (!ps || visitor.scattered_in_medium(*ps) == WalkAction::Stop) return;
         // A phase function is sampled exactly: the weight p / pdf is 1.
-        arrival = {!medium->sample_emitters(), ps->pdf, {p, {}, {}}};
-        ray = {p, ps->wi, kInfinity};
+        arrival = {!medium->sample_emitters(), ps->pdf, {p, {}, {}, ray.time}};
+        ray = {p, ps->wi, kInfinity, 0, ray.time};
         float q = 1;
         if (!limits.roulette.survives(segments, throughput, eta_scale, sampler, &q)) return;
         beta *= 1 / q;

@@ -30,7 +30,7 @@ Color shadow_transmittance(const Scene& scene, Ray ray, const Medium* medium, Sa
     // A null surface within its rounding margin of the end leaves nothing
     // to cross: turning toward the end would hit it again from the far side.
     if (!(dot(end - next.o, ray.d) > 0)) return tr;
-    ray = {next.o, end - next.o, 1};
+    ray = {next.o, end - next.o, 1, 0, ray.time};
   }
 }
 

@@ -65,6 +65,7 @@ Color connect(const Scene& scene, std::span<const PathVertex> light, int s, std:
     lv.si.p = ls->p;
     lv.si.p_error = ls->p_error;
     lv.si.ng = ls->n;
+    lv.si.time = cv.si.time;
     lv.delta_light = ls->is_delta;
     lv.pdf_fwd = light_origin_density(scene, lv);
     const float w = strategy_weight({&lv, 1}, camera_part, 1, t, heuristic,

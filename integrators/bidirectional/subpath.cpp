@@ -37,6 +37,7 @@ class SubpathRecorder {
     PathVertex& v = path_.emplace_back();
     v.kind = PathVertex::Kind::Medium;
     v.si.p = m.p;
+    v.si.time = m.time;
     v.beta = m.beta;
     v.medium = &m.medium;
     return WalkAction::Continue;

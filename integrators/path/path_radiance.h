@@ -52,7 +52,8 @@ class PathRadiance {
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
     if (v.medium.sample_emitters())
-      L += v.beta * sample_direct_light_at_medium_point(scene_, v.p, v.medium, v.wo, sampler_, u_select, u_light);
+      L += v.beta *
+           sample_direct_light_at_medium_point(scene_, v.p, v.time, v.medium, v.wo, sampler_, u_select, u_light);
     return WalkAction::Continue;
   }
 
