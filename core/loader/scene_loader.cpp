@@ -159,7 +159,7 @@ class Instantiator {
     }
     in_group_ -= group;
     // A moving shape is built in its own space and placed by its keys; a
-    // moving camera is built where its first key places it.
+    // moving camera or light is built where its first key places it.
     if (animation) {
       if (props.has("to_world"))
         throw SceneError(animation->where,
@@ -249,8 +249,8 @@ class Instantiator {
   }
 
   // <animation name="to_world"> with <transform time="..."> keys, on a
-  // sensor or on a shape of the scene's own (an instance included; not in a
-  // group, nor a group or a csg solid).
+  // sensor, an emitter or a shape of the scene's own (an instance included;
+  // not in a group, nor a group or a csg solid).
   Animation read_animation(const XmlNode& animation, const XmlNode& owner, const std::string& type) {
     animation.check_attributes({"name"});
     if (required_attribute(animation, "name") != "to_world")

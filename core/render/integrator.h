@@ -86,7 +86,8 @@ class Integrator : public Plugin {
   // Whether it follows paths through participating media and null surfaces.
   virtual bool renders_media() const { return false; }
   // Whether its paths follow a time through the shutter (every ray of a
-  // camera path at its camera ray's time), so that it renders moving shapes.
+  // path, and every path it joins, at one time), so that it renders moving
+  // shapes, lights and cameras.
   virtual bool renders_motion() const { return false; }
   // Whether it renders in spectral mode (paths carrying wavelengths).
   virtual bool renders_spectral() const { return false; }
