@@ -1,22 +1,16 @@
 #include "core/camera/moving_sensor.h"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace caustica {
 
 MovingSensor::MovingSensor(std::shared_ptr<Sensor> still, const std::vector<Transform>& keys)
     : Sensor(*still), still_(std::move(still)), motion_(keys), first_inverse_(keys.front().inverse()) {
-  const auto& parts = motion_.parts();
-  for (size_t k = 1; k < parts.size(); ++k)
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j)
-        if (std::abs(parts[k].s[i][j] - parts[0].s[i][j]) > 1e-4 * std::abs(parts[0].s[i][i]))
-          throw std::invalid_argument("a moving camera's keys must share one scale and shear (key " +
-                                      std::to_string(k + 1) +
-                                      "'s differs from the first's): a camera moves and turns, its view keeps "
-                                      "its size");
+  if (const size_t k = motion_.first_rescaled_key())
+    throw std::invalid_argument("a moving camera's keys must share one scale and shear (key " + std::to_string(k) +
+                                "'s differs from the first's): a camera moves and turns, its view keeps its size");
 }
 
 Transform MovingSensor::carried(float time) const { return motion_.at(time) * first_inverse_; }

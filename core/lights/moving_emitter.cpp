@@ -1,8 +1,8 @@
 #include "core/lights/moving_emitter.h"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace caustica {
 
@@ -12,13 +12,9 @@ MovingEmitter::MovingEmitter(std::shared_ptr<Emitter> still, const std::vector<T
     throw std::invalid_argument(
         "only point and spot lights can move yet: an area light moves with its shape, which cannot emit yet, and "
         "directional and environment lights stay still");
-  const auto& parts = motion_.parts();
-  for (size_t k = 1; k < parts.size(); ++k)
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j)
-        if (std::abs(parts[k].s[i][j] - parts[0].s[i][j]) > 1e-4 * std::abs(parts[0].s[i][i]))
-          throw std::invalid_argument("a moving light's keys must share one scale and shear (key " +
-                                      std::to_string(k + 1) + "'s differs from the first's): a light moves and turns");
+  if (const size_t k = motion_.first_rescaled_key())
+    throw std::invalid_argument("a moving light's keys must share one scale and shear (key " + std::to_string(k) +
+                                "'s differs from the first's): a light moves and turns");
 }
 
 Transform MovingEmitter::carried(float time) const { return motion_.at(time) * first_inverse_; }

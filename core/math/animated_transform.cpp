@@ -120,6 +120,14 @@ AnimatedTransform::AnimatedTransform(const std::vector<Transform>& keys) {
   }
 }
 
+size_t AnimatedTransform::first_rescaled_key() const {
+  for (size_t k = 1; k < parts_.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j)
+        if (std::abs(parts_[k].s[i][j] - parts_[0].s[i][j]) > 1e-4 * std::abs(parts_[0].s[i][i])) return k + 1;
+  return 0;
+}
+
 Transform AnimatedTransform::at(double time) const {
   if (parts_.size() == 1) return parts_[0].transform();
   const double x = std::clamp(time, 0.0, 1.0) * double(parts_.size() - 1);

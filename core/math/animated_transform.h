@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "core/math/transform.h"
@@ -38,6 +39,10 @@ class AnimatedTransform {
 
   Transform at(double time) const;
   const std::vector<TransformParts>& parts() const { return parts_; }
+  // The number (from 2) of the first key whose scale or shear differs from
+  // the first key's, or 0 when all share them: then the motion from the
+  // first key's placement is rigid.
+  size_t first_rescaled_key() const;
 
  private:
   std::vector<TransformParts> parts_;

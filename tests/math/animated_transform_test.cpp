@@ -67,5 +67,15 @@ TEST(AnimatedTransform, TakesEachLegTheShortWayAndKeepsItsKeys) {
   expect_matrix_near(motion.at(0.75).matrix(), Transform::rotate({0, 1, 0}, 85).matrix(), 1e-12);
 }
 
+// Keys that turn and move a shared scale keep the motion rigid; the first
+// key that stretches or shears is named (counted from 1).
+TEST(AnimatedTransform, NamesTheFirstKeyThatRescales) {
+  const Transform scale = Transform::scale({2, 1, 0.5f});
+  const Transform turned = Transform::translate({1, 2, 3}) * Transform::rotate({0, 0, 1}, 70) * scale;
+  EXPECT_EQ(AnimatedTransform({scale, turned, Transform::rotate({1, 0, 0}, 30) * scale}).first_rescaled_key(), 0u);
+  EXPECT_EQ(AnimatedTransform({scale, turned, turned * Transform::scale({1, 1.01f, 1})}).first_rescaled_key(), 3u);
+  EXPECT_EQ(AnimatedTransform({scale, Transform::scale({2, 1, 0.6f}), scale}).first_rescaled_key(), 2u);
+}
+
 }  // namespace
 }  // namespace caustica
