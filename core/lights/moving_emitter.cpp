@@ -4,44 +4,76 @@
 #include <string>
 #include <utility>
 
-namespace caustica {
+#include "core/geometry/offset.h"
+#include "core/math/constants.h"
 
-MovingEmitter::MovingEmitter(std::shared_ptr<Emitter> still, const std::vector<Transform>& keys)
-    : Emitter(*still), still_(std::move(still)), motion_(keys), first_inverse_(keys.front().inverse()) {
-  if (!still_->is_delta() || still_->is_infinite())
+namespace caustica {
+namespace {
+
+// A rigid map keeps an error's length, whatever its direction; its float
+// arithmetic adds a rounding relative to the point's size.
+Vec3 carried_error(Vec3 error, Vec3 moved) {
+  const float e = length(error) + gamma(16) * max_component(abs(moved));
+  return {e, e, e};
+}
+
+Vec3 carried_normal(const Transform& m, Vec3 n) { return n == Vec3() ? n : normalize(m.vector(n)); }
+
+}  // namespace
+
+MovingEmitter::MovingEmitter(std::shared_ptr<Emitter> still, const std::vector<Transform>& keys,
+                             const Transform& placement)
+    : Emitter(*still), still_(std::move(still)), motion_(keys), placement_inverse_(placement.inverse()) {
+  if (still_->is_infinite())
     throw std::invalid_argument(
-        "only point and spot lights can move yet: an area light moves with its shape, which cannot emit yet, and "
-        "directional and environment lights stay still");
+        "only point, spot and area lights can move yet: directional and environment lights "
+        "stay still");
   if (const size_t k = motion_.first_rescaled_key())
     throw std::invalid_argument("a moving light's keys must share one scale and shear (key " + std::to_string(k) +
                                 "'s differs from the first's): a light moves and turns");
 }
 
-Transform MovingEmitter::carried(float time) const { return motion_.at(time) * first_inverse_; }
+Transform MovingEmitter::carried(float time) const { return motion_.at(time) * placement_inverse_; }
 
 std::optional<LiSample> MovingEmitter::sample_Li(const ReferencePoint& ref, Vec2 u) const {
   const Transform m = carried(ref.time), back = m.inverse();
-  const float error = length(ref.p_error);  // a rigid map keeps the error's length
-  const Vec3 n = ref.n == Vec3() ? Vec3() : normalize(back.vector(ref.n));
-  auto ls = still_->sample_Li({back.point(ref.p), Vec3(error, error, error), n, ref.time}, u);
+  const Vec3 p = back.point(ref.p);
+  auto ls = still_->sample_Li({p, carried_error(ref.p_error, p), carried_normal(back, ref.n), ref.time}, u);
   if (!ls) return ls;
   ls->wi = normalize(m.vector(ls->wi));
   ls->p = m.point(ls->p);
+  ls->p_error = ls->p_error == Vec3() ? Vec3() : carried_error(ls->p_error, ls->p);
+  ls->n = carried_normal(m, ls->n);
   return ls;
+}
+
+float MovingEmitter::pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const {
+  const Transform back = carried(ref.time).inverse();
+  SurfaceInteraction local = on_light;
+  local.p = back.point(on_light.p);
+  local.ng = carried_normal(back, on_light.ng);
+  local.shading.n = carried_normal(back, on_light.shading.n);
+  return still_->pdf_Li({back.point(ref.p), ref.p_error, carried_normal(back, ref.n), ref.time},
+                        normalize(back.vector(wi)), local);
 }
 
 std::optional<LeSample> MovingEmitter::sample_Le(Vec2 u_pos, Vec2 u_dir, float time) const {
   auto le = still_->sample_Le(u_pos, u_dir, time);
   if (!le) return le;
   const Transform m = carried(time);
-  le->ray = {m.point(le->ray.o), normalize(m.vector(le->ray.d)), le->ray.t_max, le->ray.t_min, time};
+  const Vec3 d = normalize(m.vector(le->ray.d));
+  le->n = carried_normal(m, le->n);
+  Vec3 o = m.point(le->ray.o);
+  // A ray leaving a surface steps off it again past the map's rounding.
+  if (le->n != Vec3()) o = offset_ray_origin(o, carried_error({}, o), le->n, d);
+  le->ray = {o, d, le->ray.t_max, le->ray.t_min, time};
   return le;
 }
 
 void MovingEmitter::pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const {
   const Transform back = carried(ray.time).inverse();
   still_->pdf_Le({back.point(ray.o), normalize(back.vector(ray.d)), ray.t_max, ray.t_min, ray.time},
-                 n == Vec3() ? n : normalize(back.vector(n)), pdf_pos, pdf_dir);
+                 carried_normal(back, n), pdf_pos, pdf_dir);
 }
 
 }  // namespace caustica

@@ -14,6 +14,7 @@
 #include "core/loader/spectrum_value.h"
 #include "core/loader/transform_parser.h"
 #include "core/loader/xml_reader.h"
+#include "core/math/animated_transform.h"
 #include "core/math/shutter_keys.h"
 #include "core/media/medium.h"
 #include "core/registry/file_resolver.h"
@@ -151,6 +152,7 @@ class Instantiator {
     const bool group = node.tag == "shape" && type == "shapegroup";
     in_group_ += group;
     std::optional<Animation> animation;
+    std::optional<Transform> shared_scale;  // a moving area light's
     for (const XmlNode& child : node.children) {
       if (child.tag == "animation")
         animation = read_animation(child, node, type);
@@ -174,6 +176,13 @@ class Instantiator {
         props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
       } else {
         props.set_render_origin(Vec3d());
+        // An area light's shape is built with its keys' shared scale, so
+        // that the keys move it rigidly, as MovingEmitter carries light.
+        for (const XmlNode& child : node.children)
+          if (child.tag == "emitter") {
+            shared_scale = shared_scale_of(*animation);
+            props.set("to_world", {ValueKind::Transform, *shared_scale, animation->where});
+          }
       }
     }
 
@@ -198,20 +207,24 @@ class Instantiator {
         if (node.tag == "sensor")
           plugin = std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
         else
-          plugin = std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys);
+          plugin = std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys, keys.front());
       } catch (const std::invalid_argument& e) {
         throw SceneError(animation->where, e.what());
       }
     } else if (animation) {
-      if (std::static_pointer_cast<Shape>(plugin)->emitter())
-        throw SceneError(animation->where, "a moving shape cannot emit yet (area lights stay still)");
-      if (std::static_pointer_cast<Shape>(plugin)->bounds_media())
+      const auto shape = std::static_pointer_cast<Shape>(plugin);
+      if (shape->bounds_media())
         throw SceneError(animation->where, "a moving shape cannot bound media yet (media stay still)");
-      for (auto& [time, transform] : animation->keys) transform = Transform::translate(-render_origin_) * transform;
-      auto moving =
-          std::make_shared<MovingShape>(std::static_pointer_cast<Shape>(plugin), animation->keys, animation->where);
+      std::vector<Transform> rigid;
+      for (auto& [time, transform] : animation->keys) {
+        transform = Transform::translate(-render_origin_) * transform;
+        if (shared_scale) transform = transform * shared_scale->inverse();
+        rigid.push_back(transform);
+      }
+      auto moving = std::make_shared<MovingShape>(shape, animation->keys, animation->where);
       this->moving.push_back(moving);
       plugin = moving;
+      if (shape->emitter()) move_area_light(*shape, rigid, *animation);
     }
     if (node.tag == "emitter") {
       std::static_pointer_cast<Emitter>(plugin)->set_medium(props.child<Medium>("medium"));
@@ -272,6 +285,44 @@ class Instantiator {
       out.keys.emplace_back(time, parse_transform(key));
     }
     return out;
+  }
+
+  // The scale and shear every key of a moving area light's shape shares
+  // (its first key's), or a SceneError naming the first key that differs.
+  static Transform shared_scale_of(const Animation& animation) {
+    std::vector<Transform> keys;
+    for (const auto& [time, transform] : animation.keys) keys.push_back(transform);
+    if (keys.empty()) throw SceneError(animation.where, shutter_keys_problem({}, 0, 1));
+    try {
+      const AnimatedTransform motion(keys);
+      if (const size_t k = motion.first_rescaled_key())
+        throw SceneError(animation.where, "a moving area light's keys must share one scale and shear (key " +
+                                              std::to_string(k) + "'s differs from the first's)");
+      TransformParts scale = motion.parts().front();
+      scale.q = {1, 0, 0, 0};
+      scale.t = {0, 0, 0};
+      return scale.transform();
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(animation.where, std::string("an animation key is not invertible: ") + e.what());
+    }
+  }
+
+  // The area light of a moving shape, built in the shape's own space,
+  // carried by the shape's rigid keys: the shape's hits and the scene's
+  // light list name the moving light instead.
+  void move_area_light(Shape& shape, const std::vector<Transform>& rigid, const Animation& animation) {
+    const Emitter* still = shape.emitter();
+    for (auto& emitter : emitters)
+      if (emitter.get() == still) {
+        std::shared_ptr<Emitter> moving;
+        try {
+          moving = std::make_shared<MovingEmitter>(emitter, rigid, Transform());
+        } catch (const std::invalid_argument& e) {
+          throw SceneError(animation.where, e.what());
+        }
+        shape.set_emitter(moving.get());
+        emitter = moving;
+      }
   }
 
   // A shape with a place of its own (not a group, nor an instance, which a

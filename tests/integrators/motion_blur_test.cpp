@@ -366,10 +366,13 @@ TEST(MotionBlur, BadAnimationsAreRefusedByName) {
                                        key(2, 0) + key(3, 1) + "</animation></shape>",
                                    kShutter)),
               HasSubstr("a shape takes to_world as a transform or as an animation, not both"));
-  EXPECT_THAT(load_error(scene_xml("<shape type='sphere'><emitter type='area'/><animation name='to_world'>" +
-                                       key(2, 0) + key(3, 1) + "</animation></shape>",
-                                   kShutter)),
-              HasSubstr("a moving shape cannot emit yet"));
+  EXPECT_THAT(
+      load_error(scene_xml("<shape type='sphere'><emitter type='area'/><animation name='to_world'>" + key(2, 0) +
+                               "<transform time='3'><scale value='2'/></transform></animation>"
+                               "</shape>",
+                           kShutter)),
+      HasSubstr("moving.xml:1: a moving area light's keys must share one scale and shear (key 2's differs "
+                "from the first's)"));
   EXPECT_THAT(load_error(scene_xml("<medium type='homogeneous' id='fog'/><shape type='sphere'><ref name='interior' "
                                    "id='fog'/><animation name='to_world'>" +
                                        key(2, 0) + key(3, 1) + "</animation></shape>",

@@ -124,6 +124,39 @@ TEST(MovingLight, ASpotLightTurningIsTheMeanOfStillOnes) {
       kIntegrators);
 }
 
+// A small glowing ball crossing above the ball on the floor, slowly then
+// fast, as the point light does: the light of a moving shape is where the
+// shape is, for next-event estimation, for paths that hit it and for the
+// light paths and photons it sends.
+TEST(MovingLight, AnAreaLightMovesWithItsShape) {
+  const auto x_at = [](double f) { return f < 0.5 ? -0.8 + 0.8 * f : -0.4 + 2.4 * (f - 0.5); };
+  const auto place = [](double x) { return "<translate x='" + std::to_string(x) + "' y='-0.3' z='1.5'/>"; };
+  const std::string ball =
+      "<shape type='sphere'><float name='radius' value='0.1'/><emitter type='area'><rgb name='radiance' "
+      "value='30'/></emitter>";
+  expect_time_average(
+      ball + "<animation name='to_world'><transform time='0'>" + place(-0.8) + "</transform><transform time='0.5'>" +
+          place(-0.4) + "</transform><transform time='1'>" + place(0.8) + "</transform></animation></shape>",
+      [&](double f) { return ball + "<transform name='to_world'>" + place(x_at(f)) + "</transform></shape>"; },
+      kIntegrators);
+}
+
+// A square light facing down, scaled to 0.3 across, tilting from -30 to
+// 30 degrees about its own centre: the scale stays with the shape and the
+// keys turn it.
+TEST(MovingLight, AScaledAreaLightTurns) {
+  const auto tilted = [](double angle) {
+    return "<scale value='0.15'/><rotate x='1' angle='180'/><rotate y='1' angle='" + std::to_string(angle) +
+           "'/><translate z='1.2'/>";
+  };
+  const std::string square = "<shape type='rectangle'><emitter type='area'><rgb name='radiance' value='20'/></emitter>";
+  expect_time_average(
+      square + "<animation name='to_world'><transform time='0'>" + tilted(-30) + "</transform><transform time='0.5'>" +
+          tilted(0) + "</transform><transform time='1'>" + tilted(30) + "</transform></animation></shape>",
+      [&](double f) { return square + "<transform name='to_world'>" + tilted(-30 + 60 * f) + "</transform></shape>"; },
+      kIntegrators);
+}
+
 std::string load_error(const std::string& light) {
   return test::thrown_message<std::exception>(
       [&] { test::scene_from_xml(scene_xml(integrator("path"), light), "moving-light.xml"); });
@@ -132,7 +165,7 @@ std::string load_error(const std::string& light) {
 TEST(MovingLight, WhatCannotMoveIsRefusedByName) {
   const std::string a = "<translate x='-1'/>", b = "<translate x='1'/>";
   EXPECT_THAT(load_error(keyed("type='directional'>", {a, b})),
-              HasSubstr("moving-light.xml:1: only point and spot lights can move yet"));
+              HasSubstr("moving-light.xml:1: only point, spot and area lights can move yet"));
   EXPECT_THAT(load_error(keyed("type='point'>", {a, b + "<scale value='2'/>"})),
               HasSubstr("a moving light's keys must share one scale and shear (key 2's differs from the first's)"));
   EXPECT_THAT(load_error("<emitter type='point'><animation name='to_world'><transform time='0'>" + a +
