@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/camera/sensor.h"
-#include "core/math/animated_transform.h"
+#include "core/math/rigid_motion.h"
 
 namespace caustica {
 
@@ -34,14 +34,11 @@ class MovingSensor final : public Sensor {
   bool moves() const override { return true; }
 
  private:
-  // The rigid map from the first key's placement to the one at `time`.
-  Transform carried(float time) const;
   // `ray` as the still camera sees it.
   Ray to_still(const Ray& ray) const;
 
   std::shared_ptr<Sensor> still_;
-  AnimatedTransform motion_;
-  Transform first_inverse_;
+  RigidMotion motion_;  // from the first key's placement
 };
 
 }  // namespace caustica

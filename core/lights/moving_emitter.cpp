@@ -5,38 +5,22 @@
 #include <utility>
 
 #include "core/geometry/offset.h"
-#include "core/math/constants.h"
 
 namespace caustica {
-namespace {
-
-// A rigid map keeps an error's length, whatever its direction; its float
-// arithmetic adds a rounding relative to the point's size.
-Vec3 carried_error(Vec3 error, Vec3 moved) {
-  const float e = length(error) + gamma(16) * max_component(abs(moved));
-  return {e, e, e};
-}
-
-Vec3 carried_normal(const Transform& m, Vec3 n) { return n == Vec3() ? n : normalize(m.vector(n)); }
-
-}  // namespace
-
 MovingEmitter::MovingEmitter(std::shared_ptr<Emitter> still, const std::vector<Transform>& keys,
                              const Transform& placement)
-    : Emitter(*still), still_(std::move(still)), motion_(keys), placement_inverse_(placement.inverse()) {
+    : Emitter(*still), still_(std::move(still)), motion_(keys, placement) {
   if (still_->is_infinite())
     throw std::invalid_argument(
         "only point, spot and area lights can move yet: directional and environment lights "
         "stay still");
-  if (const size_t k = motion_.first_rescaled_key())
+  if (const size_t k = motion_.rescaled_key())
     throw std::invalid_argument("a moving light's keys must share one scale and shear (key " + std::to_string(k) +
                                 "'s differs from the first's): a light moves and turns");
 }
 
-Transform MovingEmitter::carried(float time) const { return motion_.at(time) * placement_inverse_; }
-
 std::optional<LiSample> MovingEmitter::sample_Li(const ReferencePoint& ref, Vec2 u) const {
-  const Transform m = carried(ref.time), back = m.inverse();
+  const Transform m = motion_.at(ref.time), back = m.inverse();
   const Vec3 p = back.point(ref.p);
   auto ls = still_->sample_Li({p, carried_error(ref.p_error, p), carried_normal(back, ref.n), ref.time}, u);
   if (!ls) return ls;
@@ -48,7 +32,7 @@ std::optional<LiSample> MovingEmitter::sample_Li(const ReferencePoint& ref, Vec2
 }
 
 float MovingEmitter::pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const {
-  const Transform back = carried(ref.time).inverse();
+  const Transform back = motion_.at(ref.time).inverse();
   SurfaceInteraction local = on_light;
   local.p = back.point(on_light.p);
   local.ng = carried_normal(back, on_light.ng);
@@ -60,7 +44,7 @@ float MovingEmitter::pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInt
 std::optional<LeSample> MovingEmitter::sample_Le(Vec2 u_pos, Vec2 u_dir, float time) const {
   auto le = still_->sample_Le(u_pos, u_dir, time);
   if (!le) return le;
-  const Transform m = carried(time);
+  const Transform m = motion_.at(time);
   const Vec3 d = normalize(m.vector(le->ray.d));
   le->n = carried_normal(m, le->n);
   Vec3 o = m.point(le->ray.o);
@@ -71,7 +55,7 @@ std::optional<LeSample> MovingEmitter::sample_Le(Vec2 u_pos, Vec2 u_dir, float t
 }
 
 void MovingEmitter::pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const {
-  const Transform back = carried(ray.time).inverse();
+  const Transform back = motion_.at(ray.time).inverse();
   still_->pdf_Le({back.point(ray.o), normalize(back.vector(ray.d)), ray.t_max, ray.t_min, ray.time},
                  carried_normal(back, n), pdf_pos, pdf_dir);
 }

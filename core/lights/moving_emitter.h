@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/lights/emitter.h"
-#include "core/math/animated_transform.h"
+#include "core/math/rigid_motion.h"
 
 namespace caustica {
 
@@ -38,12 +38,8 @@ class MovingEmitter final : public Emitter {
   bool moves() const override { return true; }
 
  private:
-  // The rigid map from the still light's placement to the one at `time`.
-  Transform carried(float time) const;
-
   std::shared_ptr<Emitter> still_;
-  AnimatedTransform motion_;
-  Transform placement_inverse_;
+  RigidMotion motion_;
 };
 
 }  // namespace caustica

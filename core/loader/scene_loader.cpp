@@ -1,5 +1,6 @@
 #include "core/loader/scene_loader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -60,13 +61,17 @@ class Instantiator {
   struct Animation {
     std::vector<std::pair<double, Transform>> keys;
     SourceLocation where;
+
+    std::vector<double> times() const {
+      std::vector<double> out;
+      for (const auto& [time, transform] : keys) out.push_back(time);
+      return out;
+    }
   };
 
   // Throws, naming the animation, if its keys do not span [open, close] evenly.
   static void check_keys(const Animation& animation, double open, double close) {
-    std::vector<double> times;
-    for (const auto& [time, transform] : animation.keys) times.push_back(time);
-    if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
+    if (const std::string problem = shutter_keys_problem(animation.times(), open, close); !problem.empty())
       throw SceneError(animation.where, problem);
   }
 
@@ -119,11 +124,10 @@ class Instantiator {
   std::vector<std::shared_ptr<Emitter>> emitters;  // every emitter built, area ones included
   std::vector<SourceLocation> emitter_places;      // where each of `emitters` was written
   std::vector<std::string> warnings;
-  GivenValues integrator_values;                     // what the last <integrator> built was given
-  int textures = 0;                                  // texture plugins built, for the scene features
-  std::vector<GivenSpectrum> spectra;                // colours given as spectra, for the scene features
-  std::vector<std::shared_ptr<MovingShape>> moving;  // timed against the shutter once the sensor is built
-  std::vector<Animation> moving_emitters;            // so are these
+  GivenValues integrator_values;       // what the last <integrator> built was given
+  int textures = 0;                    // texture plugins built, for the scene features
+  std::vector<GivenSpectrum> spectra;  // colours given as spectra, for the scene features
+  std::vector<Animation> animations;   // timed against the shutter once the sensor is built
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -166,23 +170,18 @@ class Instantiator {
       if (props.has("to_world"))
         throw SceneError(animation->where,
                          "a " + node.tag + " takes to_world as a transform or as an animation, not both");
-      if (node.tag == "sensor") {
-        check_keys(*animation, props.get_float("shutter_open"), props.get_float("shutter_close"));
-        props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
-      } else if (node.tag == "emitter") {
-        // Timed against the shutter at the end; placed by its first key now.
-        if (animation->keys.size() < 2) throw SceneError(animation->where, shutter_keys_problem({}, 0, 1));
-        moving_emitters.push_back(*animation);
+      animations.push_back(*animation);
+      if (node.tag == "sensor" || node.tag == "emitter") {
         props.set("to_world", {ValueKind::Transform, animation->keys.front().second, animation->where});
       } else {
         props.set_render_origin(Vec3d());
         // An area light's shape is built with its keys' shared scale, so
         // that the keys move it rigidly, as MovingEmitter carries light.
-        for (const XmlNode& child : node.children)
-          if (child.tag == "emitter") {
-            shared_scale = shared_scale_of(*animation);
-            props.set("to_world", {ValueKind::Transform, *shared_scale, animation->where});
-          }
+        if (std::any_of(node.children.begin(), node.children.end(),
+                        [](const XmlNode& child) { return child.tag == "emitter"; })) {
+          shared_scale = shared_scale_of(*animation);
+          props.set("to_world", {ValueKind::Transform, *shared_scale, animation->where});
+        }
       }
     }
 
@@ -199,33 +198,7 @@ class Instantiator {
     for (const std::string& name : info->ignored)
       if (props.has(name)) props.warn(name, "is ignored: " + find_ignored_param(node.tag, name)->why);
     if (node.tag == "shape") finish_shape(std::static_pointer_cast<Shape>(plugin), props, node);
-    if (animation && (node.tag == "sensor" || node.tag == "emitter")) {
-      std::vector<Transform> keys;
-      for (const auto& [time, transform] : animation->keys)
-        keys.push_back(Transform::translate(-render_origin_) * transform);
-      try {
-        if (node.tag == "sensor")
-          plugin = std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
-        else
-          plugin = std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys, keys.front());
-      } catch (const std::invalid_argument& e) {
-        throw SceneError(animation->where, e.what());
-      }
-    } else if (animation) {
-      const auto shape = std::static_pointer_cast<Shape>(plugin);
-      if (shape->bounds_media())
-        throw SceneError(animation->where, "a moving shape cannot bound media yet (media stay still)");
-      std::vector<Transform> rigid;
-      for (auto& [time, transform] : animation->keys) {
-        transform = Transform::translate(-render_origin_) * transform;
-        if (shared_scale) transform = transform * shared_scale->inverse();
-        rigid.push_back(transform);
-      }
-      auto moving = std::make_shared<MovingShape>(shape, animation->keys, animation->where);
-      this->moving.push_back(moving);
-      plugin = moving;
-      if (shape->emitter()) move_area_light(*shape, rigid, *animation);
-    }
+    if (animation) plugin = moving(plugin, node.tag, *animation, shared_scale);
     if (node.tag == "emitter") {
       std::static_pointer_cast<Emitter>(plugin)->set_medium(props.child<Medium>("medium"));
       emitters.push_back(std::static_pointer_cast<Emitter>(plugin));
@@ -284,7 +257,31 @@ class Instantiator {
           std::get<double>(parse_value_text(ValueKind::Float, required_attribute(key, "time"), key.where).value);
       out.keys.emplace_back(time, parse_transform(key));
     }
+    if (const std::string problem = key_times_problem(out.times()); !problem.empty())
+      throw SceneError(animation.where, problem);
     return out;
+  }
+
+  // The plugin carried by the animation's keys (in render space; a moving
+  // area light's shape's without the scale it was built with).
+  std::shared_ptr<Plugin> moving(const std::shared_ptr<Plugin>& plugin, const std::string& tag,
+                                 const Animation& animation, const std::optional<Transform>& shared_scale) {
+    std::vector<Transform> keys;
+    for (const auto& [time, transform] : animation.keys)
+      keys.push_back(Transform::translate(-render_origin_) * transform *
+                     (shared_scale ? shared_scale->inverse() : Transform()));
+    try {
+      if (tag == "sensor") return std::make_shared<MovingSensor>(std::static_pointer_cast<Sensor>(plugin), keys);
+      if (tag == "emitter")
+        return std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys, keys.front());
+      const auto shape = std::static_pointer_cast<Shape>(plugin);
+      if (shape->bounds_media())
+        throw SceneError(animation.where, "a moving shape cannot bound media yet (media stay still)");
+      if (shape->emitter()) move_area_light(*shape, keys);
+      return std::make_shared<MovingShape>(shape, keys);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(animation.where, e.what());
+    }
   }
 
   // The scale and shear every key of a moving area light's shape shares
@@ -292,7 +289,6 @@ class Instantiator {
   static Transform shared_scale_of(const Animation& animation) {
     std::vector<Transform> keys;
     for (const auto& [time, transform] : animation.keys) keys.push_back(transform);
-    if (keys.empty()) throw SceneError(animation.where, shutter_keys_problem({}, 0, 1));
     try {
       const AnimatedTransform motion(keys);
       if (const size_t k = motion.first_rescaled_key())
@@ -310,18 +306,12 @@ class Instantiator {
   // The area light of a moving shape, built in the shape's own space,
   // carried by the shape's rigid keys: the shape's hits and the scene's
   // light list name the moving light instead.
-  void move_area_light(Shape& shape, const std::vector<Transform>& rigid, const Animation& animation) {
+  void move_area_light(Shape& shape, const std::vector<Transform>& rigid) {
     const Emitter* still = shape.emitter();
     for (auto& emitter : emitters)
       if (emitter.get() == still) {
-        std::shared_ptr<Emitter> moving;
-        try {
-          moving = std::make_shared<MovingEmitter>(emitter, rigid, Transform());
-        } catch (const std::invalid_argument& e) {
-          throw SceneError(animation.where, e.what());
-        }
-        shape.set_emitter(moving.get());
-        emitter = moving;
+        emitter = std::make_shared<MovingEmitter>(emitter, rigid, Transform());
+        shape.set_emitter(emitter.get());
       }
   }
 
@@ -433,8 +423,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   }
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
-  for (const auto& moving : inst.moving) moving->set_shutter(sensor->shutter_open(), sensor->shutter_close());
-  for (const auto& animation : inst.moving_emitters)
+  for (const auto& animation : inst.animations)
     Instantiator::check_keys(animation, sensor->shutter_open(), sensor->shutter_close());
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
   check_emitter_powers(*scene, inst.emitter_places);

@@ -15,12 +15,17 @@ std::string text(double v) {
 
 }  // namespace
 
-std::string shutter_keys_problem(const std::vector<double>& times, double open, double close) {
+std::string key_times_problem(const std::vector<double>& times) {
   if (times.size() < 2) return "an animation needs at least two <transform time=...> keys";
   for (size_t k = 1; k < times.size(); ++k)
     if (!(times[k] > times[k - 1]))
       return "the animation's key times must increase (key " + std::to_string(k + 1) + " at " +
              std::to_string(times[k]) + " follows one at " + std::to_string(times[k - 1]) + ")";
+  return "";
+}
+
+std::string shutter_keys_problem(const std::vector<double>& times, double open, double close) {
+  if (std::string problem = key_times_problem(times); !problem.empty()) return problem;
   if (!(close > open))
     return "the sensor's shutter is closed (shutter_open " + text(open) + ", shutter_close " + text(close) +
            "), so nothing can move during it: give it an interval";

@@ -6,32 +6,15 @@
 #include <string>
 
 #include "core/math/constants.h"
-#include "core/math/shutter_keys.h"
 #include "core/shapes/rtc_scene.h"
 
 namespace caustica {
 
-MovingShape::MovingShape(std::shared_ptr<Shape> local, std::vector<std::pair<double, Transform>> keys,
-                         SourceLocation where)
-    : local_(std::move(local)), keys_(std::move(keys)), where_(std::move(where)) {
-  std::vector<Transform> transforms;
-  for (const auto& [time, transform] : keys_) transforms.push_back(transform);
-  try {
-    motion_ = AnimatedTransform(transforms);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(where_, std::string("an animation key is not invertible: ") + e.what());
-  }
-}
+MovingShape::MovingShape(std::shared_ptr<Shape> local, const std::vector<Transform>& keys)
+    : local_(std::move(local)), motion_(keys) {}
 
 MovingShape::~MovingShape() {
   for (const auto& [device, scene] : built_) rtcReleaseScene(scene);
-}
-
-void MovingShape::set_shutter(double open, double close) {
-  std::vector<double> times;
-  for (const auto& [time, transform] : keys_) times.push_back(time);
-  if (const std::string problem = shutter_keys_problem(times, open, close); !problem.empty())
-    throw SceneError(where_, problem);
 }
 
 unsigned MovingShape::attach(RTCDevice device, RTCScene scene) const {
@@ -115,8 +98,8 @@ Bounds3 MovingShape::bounds() const {
   return b;
 }
 
-// Only area emitters sample positions, and the loader refuses them on
-// moving shapes.
+// A moving shape's area light samples its still shape (MovingEmitter
+// carries the samples), never the moving one.
 PositionSample MovingShape::sample_position(Vec2) const { throw std::logic_error("a moving shape carries no emitter"); }
 
 }  // namespace caustica

@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/errors/scene_error.h"
 #include "core/math/animated_transform.h"
 #include "core/shapes/shape.h"
 
@@ -23,23 +22,19 @@ namespace caustica {
 //   </shape>
 //
 // The shape is built in its own space and placed by an Embree instance
-// with one time step per key (a moving instance places its group's scene
-// that way) (quaternion motion: scale and shear, rotation
-// and translation interpolated apart, as AnimatedTransform does); a ray
-// meets it where it is at the ray's time. The keys' times must be
-// increasing and evenly spaced, the first at the sensor's shutter_open and
-// the last at its shutter_close (set_shutter checks them).
+// with one time step per key (quaternion motion: scale and shear, rotation
+// and translation interpolated apart, as AnimatedTransform does; a moving
+// instance places its group's scene that way); a ray meets it where it is
+// at the ray's time.
 class MovingShape final : public Shape {
  public:
-  // `keys` place the shape in render space; `where` is the animation's.
-  MovingShape(std::shared_ptr<Shape> local, std::vector<std::pair<double, Transform>> keys, SourceLocation where);
+  // `keys` place the shape in render space, evenly spaced over the shutter
+  // (the loader times them). Throws std::invalid_argument for a key that
+  // cannot be decomposed.
+  MovingShape(std::shared_ptr<Shape> local, const std::vector<Transform>& keys);
   ~MovingShape() override;
   MovingShape(const MovingShape&) = delete;
   MovingShape& operator=(const MovingShape&) = delete;
-
-  // Times the keys against the shutter [open, close]; throws SceneError
-  // naming the animation if they do not span it evenly.
-  void set_shutter(double open, double close);
 
   bool moves() const override { return true; }
   unsigned attach(RTCDevice device, RTCScene scene) const override;
@@ -53,8 +48,6 @@ class MovingShape final : public Shape {
 
  private:
   std::shared_ptr<Shape> local_;
-  std::vector<std::pair<double, Transform>> keys_;
-  SourceLocation where_;
   AnimatedTransform motion_;
   mutable std::vector<std::pair<RTCDevice, RTCScene>> built_;
   mutable std::vector<const Shape*> by_geom_id_;
