@@ -17,7 +17,11 @@
 // directions by something other than the BSDF (path guiding) provides
 //   std::optional<BsdfSample> sample_scattering(const WalkVertex&, float u_lobe, Vec2 u)
 // returning the direction, the BSDF's value there and the density it was
-// drawn with, from the numbers the BSDF would have been sampled with. Visitors that handle media
+// drawn with, from the numbers the BSDF would have been sampled with, and
+// may provide
+//   Color roulette_weight(const WalkVertex&, const BsdfSample&)
+// the factor by which the sample changes the throughput Russian roulette
+// judges (else the sample's weight f |cos| / pdf). Visitors that handle media
 // also provide
 //   WalkAction at_medium_vertex(const MediumVertex&)   the ray scattered in a medium
 //   WalkAction scattered_in_medium(const PhaseSample&) the phase function was sampled there
@@ -98,6 +102,11 @@ concept ScatteringSampler = requires(Visitor& v, const WalkVertex& wv, float u_l
   { v.sample_scattering(wv, u_lobe, u) } -> std::same_as<std::optional<BsdfSample>>;
 };
 
+template <class Visitor>
+concept RouletteWeigher = requires(Visitor& v, const WalkVertex& wv, const BsdfSample& bs) {
+  { v.roulette_weight(wv, bs) } -> std::same_as<Color>;
+};
+
 template <bool kMedia, class Visitor>
 void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
                    Sampler& sampler, Visitor& visitor, const Medium* medium, Wavelengths* wavelengths) {
@@ -171,7 +180,10 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
     if (visitor.scattered(*bs) == WalkAction::Stop) return;
     const Color weight = bs->f * (abs_dot(bs->wi, si->shading.n) / bs->pdf);
     beta *= weight;
-    throughput *= weight;
+    if constexpr (RouletteWeigher<Visitor>)
+      throughput *= visitor.roulette_weight(vertex, *bs);
+    else
+      throughput *= weight;
     if (mode == TransportMode::Radiance && bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
     arrival = arrival_from(*si, *bs);
     ray = si->spawn(bs->wi);

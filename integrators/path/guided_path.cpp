@@ -18,6 +18,17 @@
 // every pass weighs the same in the image, whatever order the passes come
 // in, and training costs no samples.
 //
+// What teaches the directions is, by default, light paths traced from the
+// emitters in each training pass (light_paths per camera sample of the
+// pass): a camera path finds the bright patch behind a narrow opening by
+// luck and records it as one huge, lonely value, while many light paths
+// reach it with bounded power each. light_paths 0 keeps the paper's
+// records of camera paths. Either way roulette judges a guided path by the
+// BSDF's weight of its directions, not the mixture's: a direction the
+// guide prefers has a high density and a small weight, and a roulette on
+// that weight would end guided paths in proportion as they were sent
+// toward the light.
+//
 // Records are summed in fixed point (FixedPointSum), and the trees are
 // rebuilt from them between passes in one thread, so the image is the same
 // for any thread count. A render of a range of samples, a replayed sample
@@ -39,6 +50,7 @@
 #include "core/scene/scene.h"
 #include "integrators/path/guiding/guided_radiance.h"
 #include "integrators/path/guiding/guiding_settings.h"
+#include "integrators/path/guiding/light_path_records.h"
 
 namespace caustica {
 namespace {
@@ -58,6 +70,7 @@ class GuidedEstimator final : public PixelEstimator {
  private:
   // Traces pass `pass` over every pixel, recording only.
   bool train_alone(uint32_t pass, const std::atomic<bool>* stop);
+  bool record_light_paths_of(uint32_t pass, const std::atomic<bool>* stop);
 
   const Scene& scene_;
   uint64_t seed_;
@@ -90,8 +103,12 @@ class GuidedPathIntegrator final : public PixelIntegrator {
     const std::string pointless = guiding_pointless(scene, path_.max_depth);
     if (!pointless.empty()) return plugin_name() + ": guiding skipped (" + pointless + "); renders as path";
     const uint32_t spp = (1u << guiding_.training_passes) - 1;
-    return plugin_name() + ": path tracing with directions learnt over " + std::to_string(guiding_.training_passes) +
-           " training passes (" + std::to_string(spp) +
+    char light[32];
+    std::snprintf(light, sizeof light, "%g", guiding_.light_paths);
+    const std::string teacher = guiding_.light_paths > 0 ? std::string("light paths (") + light + " per camera sample)"
+                                                         : std::string("the camera paths' own records");
+    return plugin_name() + ": path tracing with directions learnt from " + teacher + " over " +
+           std::to_string(guiding_.training_passes) + " training passes (" + std::to_string(spp) +
            " samples per pixel, each counted in the image), mixed with BSDF sampling (bsdf_fraction " +
            std::to_string(guiding_.bsdf_fraction) + ") by one-sample MIS; surfaces with delta lobes unguided" +
            (scene.features().media ? "; media: scattering in a medium follows its phase function, unguided" : "") +
@@ -119,6 +136,7 @@ GuidedEstimator::GuidedEstimator(const GuidedPathIntegrator& integrator, const S
                            : 0),
       tree_(std::make_unique<GuidingTree>(scene.bounds())) {
   walk_.bsdf_fraction = guiding_.bsdf_fraction;
+  walk_.camera_directions = !(guiding_.light_paths > 0);
 }
 
 bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {
@@ -134,7 +152,10 @@ bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>
   const bool whole_pass = range.first == pass.first && range.count == pass.count;
   walk_.guide = built_ > 0;
   walk_.record = range.pass < training_passes_ && whole_pass;
-  if (walk_.record) recorded_pass_ = range.pass;
+  if (walk_.record) {
+    recorded_pass_ = range.pass;
+    return record_light_paths_of(range.pass, stop);
+  }
   return true;
 }
 
@@ -144,10 +165,19 @@ bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) 
   const Film& film = *scene_.sensor().film();
   const uint64_t first = (uint64_t(1) << pass) - 1, count = uint64_t(1) << pass;
   ++passes_alone_;
+  if (!record_light_paths_of(pass, stop)) return false;
   return for_each_camera_sample(
       scene_, seed_, make_tiles(film.width(), film.height()), first, count, 3, stop, std::nullopt,
       [&](Vec2i, uint64_t, const CameraSample& cs, SampleScratch& s) { sample(cs.ray, *s.sampler, s.values); },
       [](const Tile&) {});
+}
+
+bool GuidedEstimator::record_light_paths_of(uint32_t pass, const std::atomic<bool>* stop) {
+  if (walk_.camera_directions) return true;
+  const Film& film = *scene_.sensor().film();
+  const auto count =
+      uint64_t(guiding_.light_paths * double(film.width()) * double(film.height()) * double(uint64_t(1) << pass));
+  return record_light_paths(scene_, *tree_, count, pass, seed_, path_, stop);
 }
 
 void GuidedEstimator::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {

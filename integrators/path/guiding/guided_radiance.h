@@ -17,6 +17,9 @@ struct GuidedWalk {
   bool guide = false;
   bool record = false;
   float bsdf_fraction = 0.5f;
+  // Whether camera paths' records teach directions too (else light paths
+  // alone do, and camera paths only count toward halving regions).
+  bool camera_directions = true;
 };
 
 // Whether a vertex of these lobes is guided: not where any lobe is a delta
@@ -33,10 +36,12 @@ inline float mixture_pdf(float a, float bsdf_pdf, float guide_square_pdf) {
 }
 
 // The path tracer's walk (PathRadiance) with guided directions at guidable
-// vertices, recording at each of them the radiance the rest of the path
-// brings back along its sampled direction, over the density it was drawn
-// with: an estimate of the radiance's integral over each directional
-// quadrant, which the next pass samples in proportion to.
+// vertices. Where camera paths teach directions, it records at each of
+// them the radiance the rest of the path brings back along its sampled
+// direction, over the density it was drawn with: an estimate of the
+// radiance's integral over each directional quadrant, which the next pass
+// samples in proportion to. Where light paths teach them, it only counts
+// its vertices per region, toward halving it.
 template <bool kMedia>
 class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
  public:
@@ -59,7 +64,8 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
 
   std::optional<BsdfSample> sample_scattering(const WalkVertex& v, float u_lobe, Vec2 u) {
     auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
-    if (bs && region_ && walk_.record && pending_ < records_.size()) {
+    if (bs && region_ && walk_.record && !walk_.camera_directions) region_->count();
+    if (bs && region_ && walk_.record && walk_.camera_directions && pending_ < records_.size()) {
       const Color beta_after = v.beta * (bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf));
       const Vec2 d = direction_to_square(bs->wi);
       records_[pending_++] = {region_,
@@ -71,6 +77,15 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
                               {beta_after.r, beta_after.g, beta_after.b}};
     }
     return bs;
+  }
+
+  // Roulette judges a guided path by what the BSDF alone would have
+  // weighed it: a direction the guide prefers has a high density and so a
+  // small weight, and a roulette on that weight would end the path in
+  // proportion as the guide sent it toward the light, undoing the guide.
+  Color roulette_weight(const WalkVertex& v, const BsdfSample& bs) const {
+    const float p = guide_ && bsdf_pdf_ > 0 ? bsdf_pdf_ : bs.pdf;
+    return bs.f * (abs_dot(bs.wi, v.si.shading.n) / p);
   }
 
   // Records what the finished path found beyond each recorded vertex.
@@ -94,11 +109,14 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   }
 
   // u_lobe chooses the technique and, rescaled, the BSDF's lobe.
-  std::optional<BsdfSample> sample_mixture(const WalkVertex& v, float u_lobe, Vec2 u) const {
+  std::optional<BsdfSample> sample_mixture(const WalkVertex& v, float u_lobe, Vec2 u) {
     const float a = walk_.bsdf_fraction;
     if (u_lobe < a) {
       auto bs = v.bsdf.sample(v.wo, std::min(u_lobe / a, std::nextafter(1.0f, 0.0f)), u);
-      if (bs) bs->pdf = pdf(bs->wi, bs->pdf);
+      if (bs) {
+        bsdf_pdf_ = bs->pdf;
+        bs->pdf = pdf(bs->wi, bs->pdf);
+      }
       return bs;
     }
     // The guide's density is read back at wi rather than taken from its
@@ -107,6 +125,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     // quadrant's edge).
     const Vec3 wi = square_to_direction(guide_->sample(u).p);
     const auto [f, bsdf_pdf] = v.bsdf.eval_and_pdf(v.wo, wi);
+    bsdf_pdf_ = bsdf_pdf;
     const float p = pdf(wi, bsdf_pdf);
     if (f.is_black() || !(p > 0)) return std::nullopt;
     const bool same_side = dot(wi, v.si.ng) * dot(v.wo, v.si.ng) > 0;
@@ -131,6 +150,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   GuidingRegion* region_ = nullptr;
   int bucket_ = 0;
   const DirectionalDistribution* guide_ = nullptr;
+  float bsdf_pdf_ = 0;  // the BSDF's own density of the last guided vertex's sample
   // Vertices past the 64th record nothing: the paths that reach them teach
   // little, and a fixed array keeps the walk free of allocation.
   std::array<Record, 64> records_;

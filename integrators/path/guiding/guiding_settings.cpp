@@ -27,6 +27,11 @@ GuidingSettings read_guiding_settings(const Properties& props) {
   const int64_t mib = props.get_int("max_tree_memory");
   if (mib < 1 || mib > (int64_t(1) << 20)) throw props.error("max_tree_memory", "must be between 1 and 1048576 (MiB)");
   s.refinement.max_bytes = size_t(mib) << 20;
+  s.light_paths = props.get_float("light_paths");
+  if (!(s.light_paths >= 0 && s.light_paths <= 1024))
+    throw props.error("light_paths",
+                      "must be between 0 and 1024 (light paths per camera sample of a training pass; 0 learns "
+                      "from the camera paths alone)");
   return s;
 }
 
@@ -36,11 +41,14 @@ std::vector<ParamSpec> guiding_params() {
            "sample by the last distribution learnt"},
           {"bsdf_fraction", ParamType::Float, "0.5",
            "probability of sampling the BSDF rather than the learned distribution, in (0, 1]"},
-          {"spatial_threshold", ParamType::Float, "12000",
+          {"spatial_threshold", ParamType::Float, "4000",
            "records a region may hold, times sqrt(samples per pixel of the pass), before it is halved"},
           {"directional_threshold", ParamType::Float, "0.01",
            "share of a region's energy above which a directional quadrant is divided, in (0, 1)"},
-          {"max_tree_memory", ParamType::Integer, "256", "MiB the guiding trees may take; refinement stops there"}};
+          {"max_tree_memory", ParamType::Integer, "256", "MiB the guiding trees may take; refinement stops there"},
+          {"light_paths", ParamType::Float, "1",
+           "light paths traced per camera sample of a training pass, whose records teach the directions (0 to "
+           "1024); 0 learns them from the camera paths' records, as Müller et al. 2017"}};
 }
 
 std::string guiding_pointless(const Scene& scene, int64_t max_depth) {

@@ -18,9 +18,12 @@ class Scene;
 //   spatial_threshold      records a region holds, times sqrt(samples per pixel of the pass), before it is halved
 //   directional_threshold  share of a region's energy above which a directional quadrant is divided
 //   max_tree_memory        MiB the trees may take; refinement stops there
+//   light_paths            light paths traced per camera sample of a training pass, whose
+//                          records teach the directions; 0: camera paths' records teach them
 struct GuidingSettings {
   int training_passes = 6;
   float bsdf_fraction = 0.5f;
+  double light_paths = 1;
   GuidingRefinement refinement;
 };
 

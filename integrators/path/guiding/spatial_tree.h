@@ -16,7 +16,7 @@ namespace caustica {
 struct GuidingRefinement {
   // A region is halved once it holds more than spatial_threshold *
   // sqrt(samples per pixel of the pass) records.
-  double spatial_threshold = 12000;
+  double spatial_threshold = 4000;
   // A directional quadrant is divided once it holds more than this share of
   // its region's energy.
   double directional_threshold = 0.01;
@@ -45,10 +45,15 @@ struct GuidingRegion {
   std::array<DirectionalGuide, kNormalBuckets> guides;
   std::atomic<uint64_t> records{0};
 
+  // Energy for the directional distribution, and a count toward halving
+  // the region.
   void record(int bucket, Vec2 direction, double energy) {
     guides[bucket].recording.record_spread(direction, energy);
-    records.fetch_add(1, std::memory_order_relaxed);
+    count();
   }
+  // Where light paths teach the directions, camera paths only count: both
+  // kinds of path then decide where regions are fine.
+  void count() { records.fetch_add(1, std::memory_order_relaxed); }
 };
 
 // A binary tree over a cube around the scene, halving its regions along x,

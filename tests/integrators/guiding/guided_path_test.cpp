@@ -69,6 +69,27 @@ TEST(GuidedPath, IsPathWhereItHasNotLearnt) {
   EXPECT_THAT(direct.integrator->plan(*direct.scene), HasSubstr("guiding skipped (max_depth 2 leaves no light"));
 }
 
+// On the box whose light hides above a baffle, guiding must pay: light
+// paths teach the trees where the opening is, and roulette judges guided
+// paths by their BSDF's weight, not by the mixture's (which would end them
+// in proportion as the guide sends them toward the light). The variance of
+// each integrator is estimated from two independent renders (half the mean
+// squared difference over 64 x 64 x 3 values). With fixed seeds the ratio
+// guided / path was 0.42 (seeds 1, 2) and 0.50 (3, 4); with a guide learnt
+// from camera paths alone it was 1.26, with roulette on the mixture's
+// weight 1.09.
+TEST(GuidedPath, HalvesThePathTracersVarianceWhereLightComesThroughAGap) {
+  const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-baffle.xml", {{"res", "64"}});
+  const auto variance = [&](const std::string& integrator) {
+    const auto a = render(scene, integrator, 256, 0, 0, 1), b = render(scene, integrator, 256, 0, 0, 2);
+    double sum = 0;
+    for (size_t i = 0; i < a.size(); ++i) sum += double(a[i] - b[i]) * double(a[i] - b[i]);
+    return sum / double(a.size()) / 2;
+  };
+  const double path = variance("path"), guided = variance("guided_path");
+  EXPECT_LT(guided, 0.7 * path) << "guided " << guided << ", path " << path;
+}
+
 // Inside a closed sphere emitting 1 and reflecting 0.5 every ray sees
 // 1 / (1 - 0.5) = 2, however the directions are drawn. Independent runs
 // give the error (a pass's samples share the distribution they learnt);
@@ -147,6 +168,10 @@ TEST(GuidedPath, BadParametersNameThemselves) {
        "'directional_threshold' of integrator 'guided_path': must be in (0, 1)"},
       {"<integer name='max_tree_memory' value='0'/>",
        "'max_tree_memory' of integrator 'guided_path': must be between 1 and 1048576 (MiB)"},
+      {"<float name='light_paths' value='-1'/>",
+       "'light_paths' of integrator 'guided_path': must be between 0 and 1024 (light paths per camera sample"},
+      {"<float name='light_paths' value='2000'/>",
+       "'light_paths' of integrator 'guided_path': must be between 0 and 1024"},
   };
   for (const auto& c : cases) {
     const std::string error = test::load_error(with_parameter(c.declaration), "guided.xml");
