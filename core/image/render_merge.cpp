@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/image/image_input.h"
 
@@ -92,16 +95,43 @@ RenderFile read_render(const std::string& path) {
   return file;
 }
 
+namespace {
+
+// The samples [first, end) a render of one seed holds, where its metadata
+// says so; a merge of several seeds holds no one range.
+std::optional<std::pair<uint64_t, uint64_t>> sample_range(const RenderFile& part) {
+  if (!metadata_value(part, "caustica:seeds").empty()) return std::nullopt;
+  if (metadata_value(part, "caustica:first_sample").empty() || metadata_value(part, "caustica:spp").empty())
+    return std::nullopt;
+  const auto first = uint64_t(metadata_number(part, "caustica:first_sample"));
+  return std::pair{first, first + uint64_t(metadata_number(part, "caustica:spp"))};
+}
+
+// Why two renders of one seed cannot be merged as independent renders.
+std::string shared_seed_problem(const RenderFile& a, const RenderFile& b) {
+  const auto ra = sample_range(a), rb = sample_range(b);
+  if (!ra || !rb || (ra->first < rb->second && rb->first < ra->second))
+    return "they hold the same samples, not independent ones";
+  const auto span = [](std::pair<uint64_t, uint64_t> r) {
+    return std::to_string(r.first) + ".." + std::to_string(r.second - 1);
+  };
+  return "samples " + span(*ra) + " and " + span(*rb) +
+         ": disjoint ranges of one seed merge only from their raw sums (render each with --raw-sums), or render "
+         "them with different seeds to merge them as independent renders";
+}
+
+}  // namespace
+
 RenderFile merge_renders(const std::vector<RenderFile>& parts) {
   if (parts.empty()) throw std::invalid_argument("nothing to merge");
   const RenderFile& first = parts.front();
-  std::map<std::string, std::string> seed_owner;
+  std::map<std::string, const RenderFile*> seed_owner;
   for (const RenderFile& part : parts) {
     check_same_render(first, part);
     for (const std::string& seed : render_seeds(part))
-      if (const auto [it, fresh] = seed_owner.emplace(seed, part.path); !fresh)
-        throw render_error(part, "and '" + it->second + "' were both rendered with seed " + seed +
-                                     ": they hold the same samples, not independent ones");
+      if (const auto [it, fresh] = seed_owner.emplace(seed, &part); !fresh)
+        throw render_error(part, "and '" + it->second->path + "' were both rendered with seed " + seed + ": " +
+                                     shared_seed_problem(part, *it->second));
   }
 
   const Image& shape = first.image;

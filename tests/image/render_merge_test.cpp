@@ -87,6 +87,21 @@ TEST(RenderMerge, WithoutASamplesLayerTheSppCounts) {
   EXPECT_FLOAT_EQ(value(merge_renders({a, b}), "R"), 2.5f);
 }
 
+// Two ranges of one seed are not the same samples; they merge exactly only
+// from their raw sums, which a merge by count does not read: the message
+// says so, and names the ranges. Overlapping ranges do share samples.
+TEST(RenderMerge, RangesOfOneSeedWithoutRawSumsAreToldWhatTheyNeed) {
+  RenderFile early = kA, late = kA;
+  early.metadata["caustica:first_sample"] = "0";
+  late.path = "late.exr";
+  late.metadata["caustica:first_sample"] = "2";
+  EXPECT_THAT(merge_error({early, late}),
+              HasSubstr("'late.exr' and 'a.exr' were both rendered with seed 1: samples 2..3 and 0..1: disjoint "
+                        "ranges of one seed merge only from their raw sums (render each with --raw-sums)"));
+  late.metadata["caustica:first_sample"] = "1";
+  EXPECT_THAT(merge_error({early, late}), HasSubstr("with seed 1: they hold the same samples"));
+}
+
 TEST(RenderMerge, RefusesRendersThatDoNotBelongTogether) {
   EXPECT_THAT(merge_error({kA, kA}), HasSubstr("rendered with seed 1: they hold the same samples"));
   RenderFile other_scene = kB;
