@@ -98,6 +98,7 @@ TEST(RenderMerge, RangesOfOneSeedWithoutRawSumsAreToldWhatTheyNeed) {
   EXPECT_THAT(merge_error({early, late}),
               HasSubstr("'late.exr' and 'a.exr' were both rendered with seed 1: samples 2..3 and 0..1: disjoint "
                         "ranges of one seed merge only from their raw sums (render each with --raw-sums)"));
+  EXPECT_THAT(merge_error({late, early}), HasSubstr("with seed 1: samples 0..1 and 2..3: disjoint ranges"));
   late.metadata["caustica:first_sample"] = "1";
   EXPECT_THAT(merge_error({early, late}), HasSubstr("with seed 1: they hold the same samples"));
 }
