@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -30,15 +31,18 @@ void RenderCommand::add_to(CLI::App& app) {
   command_->add_option("--time", time_, "render for this many seconds instead")
       ->excludes(spp)
       ->check(finite_positive());
-  command_->add_option("--first-sample", first_sample_,
-                       "first sample index: render indices N .. N+spp-1, to merge with renders of other ranges");
+  command_
+      ->add_option("--first-sample", first_sample_,
+                   "first sample index: render indices N .. N+spp-1, to merge with renders of other ranges")
+      ->check(whole_number_up_to(kMaxFirstSample, "2^62"));
   command_->add_flag("--raw-sums", raw_sums_,
                      "store the film's raw sums (float EXR), so that `caustica merge` of renders of disjoint "
                      "--first-sample ranges gives exactly the image of one render");
   command_->add_option("--integrator", integrator_, "replace the scene's integrator: NAME or NAME:param=value,...");
   command_->add_option("-D", defines_, "define a scene parameter: -D name=value")->allow_extra_args(false);
   command_->add_option("--threads", threads_, "worker threads (default: all cores)")->check(CLI::Range(0, kMaxThreads));
-  command_->add_option("--seed", seed_, "random seed");
+  command_->add_option("--seed", seed_, "random seed")
+      ->check(whole_number_up_to(std::numeric_limits<uint64_t>::max(), "2^64 - 1"));
   command_->add_option("--exr-format", exr_format_, "half or float (default: the film's component_format)")
       ->check(CLI::IsMember({"half", "float"}));
   command_
@@ -46,7 +50,8 @@ void RenderCommand::add_to(CLI::App& app) {
                    "on: paths carry wavelengths; off: RGB; auto: as the scene needs (default: auto)")
       ->check(CLI::IsMember({"on", "off", "auto"}));
   command_->add_option("--debug-pixel", debug_pixel_, "replay one sample of pixel X,Y and print it");
-  command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays");
+  command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays")
+      ->check(whole_number_up_to(kMaxFirstSample, "2^62"));
   command_->add_flag("-q,--quiet", quiet_, "print nothing but errors");
   command_
       ->add_option("--rank-timeout", rank_timeout_,

@@ -19,6 +19,9 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
   if (!(settings_.time_limit >= 0) || !std::isfinite(settings_.time_limit))
     throw std::invalid_argument("time: must be a finite number of seconds, not " +
                                 std::to_string(settings_.time_limit));
+  if (settings_.first_sample > kMaxFirstSample)
+    throw std::invalid_argument("first_sample: '" + std::to_string(settings_.first_sample) +
+                                "' is not a whole number from 0 to 2^62");
   if (settings_.transport != RenderSettings::Transport::AsTheSceneNeeds) {
     SceneFeatures f = scene_->features();
     force_spectral(f, settings_.transport == RenderSettings::Transport::Spectral);

@@ -17,6 +17,9 @@ namespace caustica {
 // How a scene is rendered: everything that is not the scene itself.
 // The most worker threads a render takes.
 inline constexpr int kMaxThreads = 1024;
+// Sample indices stay below 2^62, so that a first sample plus any count of
+// samples (at most 2^31 per pixel and pass) never wraps.
+inline constexpr uint64_t kMaxFirstSample = uint64_t(1) << 62;
 
 struct RenderSettings {
   // NAME or NAME:param=value,... to replace the scene's integrator; the

@@ -322,13 +322,24 @@ TEST(RenderCommand, ThreadCountIsBounded) {
 // Numbers a render cannot use are refused, not replaced by a default.
 TEST(RenderCommand, NumericOptionsAreChecked) {
   const std::string render = "render " + kCornell + " -D res=8 -q -o " + (temp_dir() / "numbers.exr").string();
-  for (const auto& [option, message] : {std::pair<std::string, std::string>{"--spp 0", "--spp: Value 0 not in range"},
-                                        {"--time 0", "--time: '0' is not a finite number above zero"},
-                                        {"--time -1", "--time: '-1' is not a finite number above zero"},
-                                        {"--time nan", "--time: 'nan' is not a finite number above zero"},
-                                        {"--time inf", "--time: 'inf' is not a finite number above zero"},
-                                        {"--spp 1 --exposure nan", "--exposure: 'nan' is not a finite number"},
-                                        {"--spp 1 --exposure 1e30", "--exposure: Value 1e30 not in range"}}) {
+  for (const auto& [option, message] :
+       {std::pair<std::string, std::string>{"--spp 0", "--spp: Value 0 not in range"},
+        {"--time 0", "--time: '0' is not a finite number above zero"},
+        {"--time -1", "--time: '-1' is not a finite number above zero"},
+        {"--time nan", "--time: 'nan' is not a finite number above zero"},
+        {"--time inf", "--time: 'inf' is not a finite number above zero"},
+        {"--spp 1 --exposure nan", "--exposure: 'nan' is not a finite number"},
+        {"--spp 1 --exposure 1e30", "--exposure: Value 1e30 not in range"},
+        // Unsigned parses would wrap these to 2^64 - 1 and a black image.
+        {"--spp 1 --first-sample -1", "--first-sample: '-1' is not a whole number from 0 to 2^62"},
+        {"--spp 4 --first-sample 18446744073709551614",
+         "--first-sample: '18446744073709551614' is not a whole number from 0 to 2^62"},
+        {"--spp 1 --first-sample 4611686018427387905", "is not a whole number from 0 to 2^62"},
+        {"--spp 1 --first-sample +3", "'+3' is not a whole number"},
+        {"--spp 1 --seed -1", "--seed: '-1' is not a whole number from 0 to 2^64 - 1"},
+        {"--spp 1 --seed 18446744073709551616",
+         "--seed: '18446744073709551616' is not a whole number from 0 to 2^64 - 1"},
+        {"--spp 1 --debug-pixel 1,1 --debug-sample -2", "--debug-sample: '-2' is not a whole number"}}) {
     const test::CommandResult r = run_caustica(render + " " + option);
     EXPECT_NE(r.status, 0) << option;
     EXPECT_THAT(r.output, HasSubstr(message)) << option;

@@ -78,6 +78,7 @@ def test_errors_carry_the_command_lines_messages():
     (["--integrator", "path:no_such=1"], {"integrator": "path:no_such=1"}),
     (["--integrator", "nosuch"], {"integrator": "nosuch"}),
     (["--threads", "5000"], {"threads": 5000}),
+    (["--first-sample", "4611686018427387905"], {"first_sample": 4611686018427387905}),
 ])
 def test_bad_render_options_raise_the_command_lines_message(option, kwargs):
     cli = subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(BOX), "-o", "/dev/null/x.exr", "--spp", "1",
@@ -87,7 +88,8 @@ def test_bad_render_options_raise_the_command_lines_message(option, kwargs):
         caustica.render(caustica.load(BOX, defines={"res": "4"}), spp=1, **kwargs)
     # The command line names its option with dashes and a capital V is CLI11's.
     message = str(raised.value)
-    assert message.replace("threads:", "--threads:") in cli.stderr, (message, cli.stderr)
+    message = message.replace("threads:", "--threads:").replace("first_sample:", "--first-sample:")
+    assert message in cli.stderr, (message, cli.stderr)
 
 
 def test_compare_reports_the_squared_error_of_the_beauty():
