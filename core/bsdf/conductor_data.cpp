@@ -75,10 +75,6 @@ ConductorIor absolute_ior(const Properties& props) {
     ior.k_spectrum = props.spectrum("k");
     if (!ior.eta_spectrum != !ior.k_spectrum)
       throw props.error(ior.eta_spectrum ? "k" : "eta", "give eta and k both as spectra, or neither");
-    for (const auto& [name, s] : {std::pair{"eta", ior.eta_spectrum.get()}, std::pair{"k", ior.k_spectrum.get()}})
-      if (s)
-        for (double v : s->values)
-          if (!(v >= 0)) throw props.error(name, "must not be negative");
     ior.scene_spectra = ior.measured();
     return ior;
   }

@@ -28,8 +28,20 @@ void add_sample(SampledSpectrum& s, double nm, double value) {
   if (!s.nm.empty() && !(nm > s.nm.back()))
     throw std::invalid_argument("wavelengths must increase, but " + std::to_string(nm) + " nm follows " +
                                 std::to_string(s.nm.back()) + " nm");
+  // Every spectrum a scene gives is a reflectance, a radiance or an
+  // optical constant, none of which can be negative.
+  if (value < 0)
+    throw std::invalid_argument("value " + std::to_string(value) + " at " + std::to_string(nm) +
+                                " nm is negative (a reflectance, radiance or optical constant cannot be)");
   s.nm.push_back(nm);
   s.values.push_back(value);
+}
+
+// One wavelength is no band: every other wavelength would read zero.
+void check_band(const SampledSpectrum& s, const std::string& what) {
+  if (s.nm.size() == 1)
+    throw std::invalid_argument(what + " holds one wavelength only (" + std::to_string(s.nm.front()) +
+                                " nm); a spectrum needs two or more, between which it is interpolated");
 }
 
 }  // namespace
@@ -46,6 +58,7 @@ SampledSpectrum parse_spectrum_pairs(const std::string& text) {
     add_sample(s, parse_number(item.substr(0, colon), "a wavelength"), parse_number(item.substr(colon + 1), "a value"));
     start = end + 1;
   }
+  check_band(s, "the spectrum");
   return s;
 }
 
@@ -69,6 +82,7 @@ SampledSpectrum read_spd_file(const std::filesystem::path& file) {
     }
   }
   if (s.nm.empty()) throw std::invalid_argument("spectrum file '" + file.string() + "' holds no values");
+  check_band(s, "spectrum file '" + file.string() + "'");
   return s;
 }
 

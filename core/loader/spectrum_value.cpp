@@ -26,6 +26,7 @@ PropertyValue spectral(const XmlNode& node, SampledSpectrum s) {
 
 PropertyValue from_blackbody(const XmlNode& node, double kelvin, double scale) {
   if (!(kelvin > 0)) throw SceneError(node.where, "a black body's temperature must be positive");
+  if (!(scale >= 0)) throw SceneError(node.where, "a black body's scale must not be negative");
   SampledSpectrum s = blackbody(kelvin);
   for (double& v : s.values) v *= scale;
   return spectral(node, std::move(s));

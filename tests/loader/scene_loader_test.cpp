@@ -271,6 +271,23 @@ INSTANTIATE_TEST_SUITE_P(
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
                  "value='400:0.5, 300:1'/></bsdf></scene>",
                  "bad.xml:3: <spectrum>: wavelengths must increase, but 300.000000 nm follows 400.000000 nm"},
+        BadInput{"negative spectrum value",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "value='400:0.5, 500:-0.25, 600:0.5'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: value -0.250000 at 500.000000 nm is negative"},
+        BadInput{"spectrum of one wavelength",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "value='500:0.5'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: the spectrum holds one wavelength only (500.000000 nm)"},
+        BadInput{"black body of negative scale",
+                 "<scene version='3.0.0'>\n<emitter type='constant'>\n<blackbody name='radiance' temperature='3000' "
+                 "multiplier='-1'/></emitter></scene>",
+                 "bad.xml:3: a black body's scale must not be negative"},
+        BadInput{"black body of negative scale, Mitsuba 3's form",
+                 "<scene version='3.0.0'>\n<emitter type='constant'>\n<spectrum name='radiance' type='blackbody'>"
+                 "<float name='temperature' value='3000'/><float name='scale' value='-1'/></spectrum>"
+                 "</emitter></scene>",
+                 "bad.xml:3: a black body's scale must not be negative"},
         BadInput{"unknown spectrum type",
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' type='d50'/>"
                  "</bsdf></scene>",
@@ -536,6 +553,24 @@ TEST(SceneLoader, SpectraBecomeRgb) {
   const Color old = power("<blackbody name='radiance' temperature='4000K' multiplier='1e-6'/>");
   EXPECT_FLOAT_EQ(modern.r, old.r);
   EXPECT_GT(modern.r, modern.b);  // 4000 K is warm
+}
+
+// A spectrum file's bad values are refused naming the file and its line,
+// as inline values are; a file of one line is no band.
+TEST(SceneLoader, SpectrumFilesWithNegativeValuesOrOneWavelengthAreRefused) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto negative = dir / "caustica_negative.spd", single = dir / "caustica_single.spd";
+  std::ofstream(negative) << "# nm value\n400 0.5\n500 -0.1\n600 0.5\n";
+  std::ofstream(single) << "550 0.8\n";
+  const auto error = [](const std::filesystem::path& file) {
+    return test::load_error("<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' filename='" +
+                                file.string() + "'/></bsdf></scene>",
+                            "spd.xml");
+  };
+  EXPECT_THAT(error(negative), HasSubstr("spd.xml:3: <spectrum>: " + negative.string() +
+                                         ":3: value -0.100000 at 500.000000 nm is negative"));
+  EXPECT_THAT(error(single), HasSubstr("spd.xml:3: <spectrum>: spectrum file '" + single.string() +
+                                       "' holds one wavelength only (550.000000 nm)"));
 }
 
 // Film parameters that cannot matter to caustica are accepted, each with a

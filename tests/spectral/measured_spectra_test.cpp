@@ -161,7 +161,7 @@ TEST(MeasuredSpectra, BadConductorSpectraAreRefused) {
   EXPECT_THAT(error("<spectrum name='eta' value='400:1.5, 700:0.2'/><rgb name='k' value='3'/>"),
               HasSubstr("test.xml:2: parameter 'k' of bsdf 'conductor': give eta and k both as spectra, or neither"));
   EXPECT_THAT(error("<spectrum name='eta' value='400:1.5, 500:-0.2, 700:1'/><spectrum name='k' value='400:2, 700:4'/>"),
-              HasSubstr("parameter 'eta' of bsdf 'conductor': must not be negative"));
+              HasSubstr("test.xml:2: <spectrum>: value -0.200000 at 500.000000 nm is negative"));
 }
 
 }  // namespace
