@@ -211,7 +211,9 @@ PyResult merge(const std::vector<py::object>& sources) {
 // A render's layers: a result's, or an EXR's read from its path.
 std::shared_ptr<const Image> image_of(const py::object& source) {
   if (py::isinstance<PyResult>(source)) return source.cast<const PyResult&>().image;
-  return std::make_shared<const Image>(read_image(path_of(source, "compare")));
+  const std::filesystem::path path = path_of(source, "compare");
+  require_linear_image(path);
+  return std::make_shared<const Image>(read_image(path));
 }
 
 py::dict compare(const py::object& image, const py::object& reference, double epsilon) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/cli/number_checks.h"
+#include "core/image/image_input.h"
 #include "core/image/render_merge.h"
 
 namespace caustica {
@@ -20,6 +21,8 @@ void CompareCommand::add_to(CLI::App& app) {
 }
 
 int CompareCommand::run() const {
+  require_linear_image(image_);
+  require_linear_image(reference_);
   const RenderFile image = read_render(image_), reference = read_render(reference_);
   // Shared samples would make the render and the reference err alike, and
   // the comparison would understate the render's error.

@@ -2,11 +2,22 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 #include "core/image/image_limits.h"
 
 namespace caustica {
+
+void require_linear_image(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".png" || ext == ".jpg" || ext == ".jpeg")
+    throw std::runtime_error("'" + path.string() +
+                             "' is a display image (tone-mapped and encoded for a screen); errors are measured on "
+                             "linear renders (.exr, .hdr, .pfm): give the EXR written beside it");
+}
 
 Image read_image(const std::filesystem::path& path, std::map<std::string, std::string>* metadata) {
   auto in = OIIO::ImageInput::open(path.string());

@@ -12,4 +12,9 @@ namespace caustica {
 // Throws std::runtime_error naming the file.
 Image read_image(const std::filesystem::path& path, std::map<std::string, std::string>* metadata = nullptr);
 
+// Throws std::runtime_error naming the file if it is a display image (PNG
+// or JPEG: tone-mapped and encoded for a screen), which measuring errors
+// against a linear render would mislead.
+void require_linear_image(const std::filesystem::path& path);
+
 }  // namespace caustica

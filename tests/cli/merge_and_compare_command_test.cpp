@@ -97,6 +97,25 @@ TEST_F(MergeAndCompare, CompareRejectsImagesOfAnotherSize) {
   EXPECT_THAT(r.output, HasSubstr("caustica: error: the image is 9x9 but the reference is 8x8"));
 }
 
+// A display PNG holds tone-mapped, screen-encoded values: its error against
+// a linear reference would mean nothing, so compare refuses it, either way
+// round.
+TEST_F(MergeAndCompare, CompareRefusesDisplayImages) {
+  const std::string exr = (dir() / "display.exr").string(), png = (dir() / "display.png").string();
+  ASSERT_EQ(run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml -o " + exr +
+                         " --spp 1 -D res=8 -q")
+                .status,
+            0);
+  for (const std::string& args : {png + " " + exr, exr + " " + png}) {
+    const test::CommandResult r = run_caustica("compare " + args);
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_THAT(r.output, HasSubstr("caustica: error: '" + png +
+                                    "' is a display image (tone-mapped and encoded for a screen); errors are measured "
+                                    "on linear renders (.exr, .hdr, .pfm)"))
+        << args;
+  }
+}
+
 // Two renders of one seed over disjoint --first-sample ranges, merged from
 // their raw sums, are the one render of all their samples, pixel for pixel.
 TEST_F(MergeAndCompare, RangesOfOneSeedMergeIntoTheRenderOfTheirUnion) {

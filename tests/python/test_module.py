@@ -92,6 +92,14 @@ def test_bad_render_options_raise_the_command_lines_message(option, kwargs):
     assert message in cli.stderr, (message, cli.stderr)
 
 
+def test_compare_refuses_a_display_image(tmp_path):
+    scene = caustica.load(BOX, defines={"res": "4"})
+    png = tmp_path / "display.png"
+    png.write_bytes(b"not read")
+    with pytest.raises(RuntimeError, match="is a display image"):
+        caustica.compare(str(png), caustica.render(scene, spp=1))
+
+
 def test_compare_reports_the_squared_error_of_the_beauty():
     scene = caustica.load(BOX, defines={"res": "8"})
     a = caustica.render(scene, spp=4, seed=1)
