@@ -27,7 +27,7 @@ class ConstantEmitter final : public Emitter {
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return uniform_sphere_pdf(); }
 
-  Color Le_infinite(Vec3) const override { return radiance_; }
+  Color Le_infinite(Vec3, float) const override { return radiance_; }
 
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float) const override {
     const Vec3 d = -square_to_uniform_sphere(u_dir);

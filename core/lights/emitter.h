@@ -75,8 +75,9 @@ class Emitter : public Plugin {
   virtual float pdf_Li(const ReferencePoint& ref, Vec3 wi, const SurfaceInteraction& on_light) const = 0;
   // Radiance leaving a point of the emitter's surface in direction w.
   virtual Color L(const SurfaceInteraction&, Vec3) const { return {}; }
-  // Radiance of an infinite emitter arriving along -d.
-  virtual Color Le_infinite(Vec3) const { return {}; }
+  // Radiance of an infinite emitter arriving along -d at `time` (see
+  // Ray::time).
+  virtual Color Le_infinite(Vec3, float) const { return {}; }
 
   // An emitted ray; a moving light emits from where it is at `time` (see
   // Ray::time), and the caller gives the ray that time.

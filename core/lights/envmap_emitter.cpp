@@ -88,7 +88,7 @@ class EnvmapEmitter final : public Emitter {
 
   float pdf_Li(const ReferencePoint&, Vec3 wi, const SurfaceInteraction&) const override { return pdf_direction(wi); }
 
-  Color Le_infinite(Vec3 d) const override { return texel(to_uv(d)); }
+  Color Le_infinite(Vec3 d, float) const override { return texel(to_uv(d)); }
 
   std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float) const override {
     if (!distribution_) return std::nullopt;

@@ -275,8 +275,11 @@ class Instantiator {
       if (tag == "emitter")
         return std::make_shared<MovingEmitter>(std::static_pointer_cast<Emitter>(plugin), keys, keys.front());
       const auto shape = std::static_pointer_cast<Shape>(plugin);
-      if (shape->bounds_media())
-        throw SceneError(animation.where, "a moving shape cannot bound media yet (media stay still)");
+      for (const Medium* medium : {shape->interior(), shape->exterior()})
+        if (medium && !medium->is_homogeneous())
+          throw SceneError(animation.where,
+                           "a moving shape can bound homogeneous media only: a heterogeneous medium's density "
+                           "stays where its own to_world puts it");
       if (shape->emitter()) move_area_light(*shape, keys);
       return std::make_shared<MovingShape>(shape, keys);
     } catch (const std::invalid_argument& e) {

@@ -78,10 +78,12 @@ std::string lobe_names(uint32_t lobes) {
 
 void count_media(const Scene& scene, SceneFeatures& f) {
   std::set<const Medium*> media;
-  for (const auto& s : scene.shapes()) {
-    if (s->interior()) media.insert(s->interior());
-    if (s->exterior()) media.insert(s->exterior());
-  }
+  // A moving shape's hits name the still shape it carries, which bounds the media.
+  for (const auto& shape : scene.shapes())
+    for (const Shape* s : shape->material_surfaces()) {
+      if (s->interior()) media.insert(s->interior());
+      if (s->exterior()) media.insert(s->exterior());
+    }
   if (const Medium* camera = scene.sensor().medium()) {
     media.insert(camera);
     f.camera_in_medium = true;

@@ -29,12 +29,13 @@ void emission_at_surface(const Scene& scene, const SurfaceInteraction& si, Vec3 
   add(*emitter, Le, w);
 }
 
-// Emission met by a ray that leaves the scene in direction d:
+// Emission met by a ray that leaves the scene in direction d at `time`:
 // add(emitter, Le, weight) once for each environment emitter, weighed as above.
 template <class Add>
-void emission_from_environment(const Scene& scene, Vec3 d, const Arrival& arrival, MisCounts counts, Add&& add) {
+void emission_from_environment(const Scene& scene, Vec3 d, float time, const Arrival& arrival, MisCounts counts,
+                               Add&& add) {
   for (const Emitter* env : scene.infinite_emitters()) {
-    const Color Le = env->Le_infinite(d);
+    const Color Le = env->Le_infinite(d, time);
     if (Le.is_black()) continue;
     const float w = arrival.delta ? 1
                                   : bsdf_sample_mis_weight(scene, *env, arrival.from, d, arrival.pdf,

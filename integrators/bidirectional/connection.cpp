@@ -28,7 +28,7 @@ Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t, const 
         strategy_weight({}, camera_part, 0, t, heuristic, connection_densities(scene, {}, camera_part, 0, t), merging);
   };
   if (cv.environment)
-    emission_from_environment(scene, cv.w_env, unweighted, {}, add);
+    emission_from_environment(scene, cv.w_env, cv.si.time, unweighted, {}, add);
   else if (cv.emitter)
     emission_at_surface(scene, cv.si, direction_to(cv, camera[t - 2]), unweighted, {}, add);
   return sum;

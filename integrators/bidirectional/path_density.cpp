@@ -35,7 +35,7 @@ float emission_density(const PathVertex& light, const PathVertex& next, float ch
   if (light.environment) {
     // Environment rays start on a disk facing their direction, so the
     // density of the point they reach is the disk's, projected.
-    light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
+    light.emitter->pdf_Le({next.p(), -light.w_env, kInfinity, 0, light.si.time}, {}, &pdf_pos, &pdf_dir);
     return parallel_to_area(next, light.w_env, pdf_pos, chain_cos);
   }
   light.emitter->pdf_Le({light.p(), direction_to(light, next), kInfinity, 0, light.si.time}, light.si.ng, &pdf_pos,
@@ -47,7 +47,7 @@ float light_origin_density(const Scene& scene, const PathVertex& v) {
   const float pmf = scene.light_selection().pmf(v.emitter);
   float pdf_pos = 0, pdf_dir = 0;
   if (v.environment) {
-    v.emitter->pdf_Le({{}, -v.w_env, kInfinity}, {}, &pdf_pos, &pdf_dir);
+    v.emitter->pdf_Le({{}, -v.w_env, kInfinity, 0, v.si.time}, {}, &pdf_pos, &pdf_dir);
     return pmf * pdf_dir;
   }
   v.emitter->pdf_Le({v.p(), v.si.ng, kInfinity, 0, v.si.time}, v.si.ng, &pdf_pos, &pdf_dir);

@@ -54,6 +54,7 @@ class SubpathRecorder {
     v.kind = PathVertex::Kind::Light;
     v.environment = true;
     v.w_env = e.ray.d;
+    v.si.time = e.ray.time;
     v.beta = e.beta;
   }
 

@@ -99,16 +99,16 @@ WalkAction DirectLight::at_vertex(const WalkVertex& v) {
     if (const auto hit = scene_.intersect(v.si.spawn(bs->wi)))
       emission_at_surface(scene_, *hit, -bs->wi, arrival, counts, add);
     else
-      emission_from_environment(scene_, bs->wi, arrival, counts, add);
+      emission_from_environment(scene_, bs->wi, arrival.from.time, arrival, counts, add);
   }
   return WalkAction::Stop;
 }
 
 void DirectLight::escaped(const WalkEscape& e) {
   if (!settings_.hide_emitters_)
-    emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
-      L += e.beta * emission_for(emitter, Le, wavelengths_) * w;
-    });
+    emission_from_environment(
+        scene_, e.ray.d, e.ray.time, e.arrival, {},
+        [&](const Emitter& emitter, Color Le, float w) { L += e.beta * emission_for(emitter, Le, wavelengths_) * w; });
 }
 
 }  // namespace

@@ -42,9 +42,10 @@ class PathRadiance {
 
   void escaped(const WalkEscape& e) {
     if (shows_emission(e.segments))
-      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
-        L += e.beta * emission_for(emitter, Le, wavelengths_) * w;
-      });
+      emission_from_environment(scene_, e.ray.d, e.ray.time, e.arrival, {},
+                                [&](const Emitter& emitter, Color Le, float w) {
+                                  L += e.beta * emission_for(emitter, Le, wavelengths_) * w;
+                                });
   }
 
   WalkAction at_medium_vertex(const MediumVertex& v) requires kMedia {

@@ -105,9 +105,10 @@ class VisiblePoint {
 
   void escaped(const WalkEscape& e) {
     if (e.segments > 1 || !settings_.hide_emitters)
-      emission_from_environment(scene_, e.ray.d, e.arrival, {}, [&](const Emitter& emitter, Color Le, float w) {
-        direct += e.beta * emission_for(emitter, Le, wavelengths_) * w;
-      });
+      emission_from_environment(scene_, e.ray.d, e.ray.time, e.arrival, {},
+                                [&](const Emitter& emitter, Color Le, float w) {
+                                  direct += e.beta * emission_for(emitter, Le, wavelengths_) * w;
+                                });
   }
 
   WalkAction scattered(const BsdfSample&) { return WalkAction::Continue; }

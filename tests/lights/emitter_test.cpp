@@ -179,7 +179,7 @@ TEST(ConstantEmitter, IlluminatesFromEveryDirection) {
   ASSERT_TRUE(ls);
   EXPECT_TRUE(ls->is_infinite);
   EXPECT_FLOAT_EQ(ls->pdf, 1 / (4 * kPi));
-  EXPECT_FLOAT_EQ(light.Le_infinite({1, 0, 0}).g, 0.5f);
+  EXPECT_FLOAT_EQ(light.Le_infinite({1, 0, 0}, 0).g, 0.5f);
   // Emitted rays start outside the scene and head into it.
   const auto le = light.sample_Le({0.3f, 0.6f}, {0.9f, 0.1f});
   ASSERT_TRUE(le);

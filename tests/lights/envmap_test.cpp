@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <random>
 
-#include "core/image/image_output.h"
 #include "core/math/constants.h"
 #include "tests/support/chi2.h"
+#include "tests/support/env_map_file.h"
 #include "tests/support/independent_runs.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
@@ -35,18 +35,7 @@ Color texel(int x, int y) {
 }
 
 fs::path write_map(const std::string& name, Color (*value)(int, int), int w = kW, int h = kH) {
-  Image image{w, h, {"R", "G", "B"}, std::vector<float>(size_t(w) * h * 3)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Color c = value(x, y);
-      float* p = &image.pixels[(size_t(y) * w + x) * 3];
-      p[0] = c.r;
-      p[1] = c.g;
-      p[2] = c.b;
-    }
-  const fs::path path = fs::temp_directory_path() / name;
-  write_exr(path, image, {}, false);
-  return path;
+  return test::write_env_map(name, value, w, h);
 }
 
 std::string envmap(const fs::path& file, const std::string& extra = "") {
@@ -75,7 +64,7 @@ TEST(Envmap, SampledDirectionsFollowPdfLi) {
   for (int i = 0; i < 100; ++i) {
     const auto ls = light.sample_Li(ref, u.next_2d());
     ASSERT_TRUE(ls);
-    EXPECT_EQ(ls->Li.r, light.Le_infinite(ls->wi).r);
+    EXPECT_EQ(ls->Li.r, light.Le_infinite(ls->wi, 0).r);
   }
 }
 
@@ -111,11 +100,11 @@ TEST(Envmap, ImageOrientationIsMitsubas) {
   const auto scene =
       test::scene_from_xml("<scene version='3.0.0'>" + envmap(write_map("caustica_marker.exr", marker)) + "</scene>");
   const Emitter& light = *scene->emitters().front();
-  EXPECT_EQ(light.Le_infinite({0, 1, 0}).r, 1);
-  EXPECT_EQ(light.Le_infinite({0, -1, 0}).g, 1);
-  EXPECT_EQ(light.Le_infinite(normalize(Vec3(-0.01f, -0.01f, 1))).b, 1);
-  EXPECT_EQ(light.Le_infinite(normalize(Vec3(1, -0.01f, 0.01f))).r, 1);
-  EXPECT_EQ(light.Le_infinite(normalize(Vec3(1, -0.01f, 0.01f))).g, 1);
+  EXPECT_EQ(light.Le_infinite({0, 1, 0}, 0).r, 1);
+  EXPECT_EQ(light.Le_infinite({0, -1, 0}, 0).g, 1);
+  EXPECT_EQ(light.Le_infinite(normalize(Vec3(-0.01f, -0.01f, 1)), 0).b, 1);
+  EXPECT_EQ(light.Le_infinite(normalize(Vec3(1, -0.01f, 0.01f)), 0).r, 1);
+  EXPECT_EQ(light.Le_infinite(normalize(Vec3(1, -0.01f, 0.01f)), 0).g, 1);
 }
 
 // A diffuse plane facing +y under the map receives the irradiance
