@@ -61,6 +61,11 @@ PerspectiveProjection::PerspectiveProjection(const Properties& props, const Film
   // The crop window's part of the plane: importance integrates to one over
   // what is rendered.
   plane_area_ = 4 * tan_x_ * tan_y_ * window_.fraction();
+  // Importance is one over this area (times the lens's): it must be a float.
+  if (!std::isnormal(plane_area_) || !std::isnormal(1 / plane_area_))
+    throw props.error(by_focal_length ? "focal_length" : "fov",
+                      "gives a view too narrow for single precision (its window on the image plane has no area "
+                      "as a float)");
 }
 
 Vec3 PerspectiveProjection::plane_point(Vec2 raster) const {

@@ -17,6 +17,7 @@
 
 #include "core/camera/perspective_projection.h"
 #include "core/camera/sensor.h"
+#include "core/geometry/traceable_size.h"
 #include "core/math/constants.h"
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
@@ -50,6 +51,10 @@ class ProjectiveSensor : public Sensor {
       lens_radius_ = props.get_float("aperture_radius");
       if (!(lens_radius_ >= 0) || !std::isfinite(lens_radius_))
         throw props.error("aperture_radius", "must be zero or more (zero is a pinhole)");
+      if (lens_radius_ > kFarthestFromCamera)
+        throw props.error("aperture_radius",
+                          "must be at most 1e8: rays from the lens's edge start beyond what "
+                          "caustica traces in single precision");
       focus_ = props.has("focus_distance") ? props.get_float("focus_distance") : far_;
       if (!(focus_ > 0) || !std::isfinite(focus_)) throw props.error("focus_distance", "must be positive");
       // A lens too small for its area to be a float is the pinhole.
@@ -74,7 +79,11 @@ class ProjectiveSensor : public Sensor {
       return {origin_, normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z, time};
     }
     const Vec2 lens = square_to_uniform_disk_concentric(u_lens) * lens_radius_;
-    const Vec3 d_local = normalize(on_plane * focus_ - Vec3(lens.x, lens.y, 0));
+    // In double: a focus distance or a lens near float's limits squares
+    // past them.
+    const double x = double(on_plane.x) * focus_ - lens.x, y = double(on_plane.y) * focus_ - lens.y, z = focus_;
+    const double length = std::sqrt(x * x + y * y + z * z);
+    const Vec3 d_local(float(x / length), float(y / length), float(z / length));
     return {lens_point(lens), normalize(to_world_.vector(d_local)), far_ / d_local.z, near_ / d_local.z, time};
   }
 
@@ -122,8 +131,11 @@ class ProjectiveSensor : public Sensor {
   bool to_raster(const Ray& ray, float cos_theta, Vec2* raster) const {
     const Vec3 d = to_camera_.vector(ray.d);
     if (lens_radius_ == 0) return projection_.to_raster(d, raster);
+    // The point met at the focus depth, o + d focus / cos, scaled by
+    // cos / focus (the pinhole sees only its direction): no overflow for
+    // a far focus.
     const Vec3 o = to_camera_.vector(ray.o - origin_);
-    return projection_.to_raster(o + d * (focus_ / cos_theta), raster);
+    return projection_.to_raster(o * (cos_theta / focus_) + d, raster);
   }
 
   Transform to_world_, to_camera_;

@@ -22,6 +22,7 @@
 #include "core/registry/ignored_params.h"
 #include "core/registry/properties.h"
 #include "core/registry/property_value.h"
+#include "core/scene/scene_extent.h"
 #include "core/shapes/moving_shape.h"
 
 namespace caustica {
@@ -429,6 +430,7 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   for (const auto& animation : inst.animations)
     Instantiator::check_keys(animation, sensor->shutter_open(), sensor->shutter_close());
   auto scene = std::make_shared<Scene>(std::move(shapes), std::move(inst.emitters), std::move(sensor), source);
+  if (const auto problem = scene_extent_problem(scene->bounds())) throw SceneError(root.where, *problem);
   check_emitter_powers(*scene, inst.emitter_places);
   scene->set_render_origin(origin);
   SceneFeatures features = analyze_scene(*scene, inst.textures > 0, inst.spectra);

@@ -29,10 +29,16 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
       throw std::invalid_argument(kind_ + " mesh: vertex index " + std::to_string(index) + " is out of range (" +
                                   std::to_string(mesh_.positions.size()) + " vertices)");
   if (mesh_.indices.size() % 3 != 0) throw std::invalid_argument(kind_ + " mesh: indices do not form triangles");
+  // In double: a squared area is a side's fourth power, which leaves
+  // float's range for sides beyond about 1e9 (the scene is then refused
+  // for its size, not for an area).
   const auto area2 = [&](size_t i) {
     const Vec3 p0 = mesh_.positions[mesh_.indices[i]], p1 = mesh_.positions[mesh_.indices[i + 1]],
                p2 = mesh_.positions[mesh_.indices[i + 2]];
-    return squared_length(cross(p1 - p0, p2 - p0));
+    const double ax = double(p1.x) - p0.x, ay = double(p1.y) - p0.y, az = double(p1.z) - p0.z;
+    const double bx = double(p2.x) - p0.x, by = double(p2.y) - p0.y, bz = double(p2.z) - p0.z;
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    return cx * cx + cy * cy + cz * cz;
   };
   std::vector<bool> had_area(triangle_count());
   for (size_t i = 0; i < mesh_.indices.size(); i += 3) had_area[i / 3] = area2(i) > 0;
@@ -44,9 +50,9 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
   std::vector<float> areas;
   areas.reserve(triangle_count());
   for (size_t i = 0; i < mesh_.indices.size(); i += 3) {
-    const float stored2 = area2(i);
+    const double stored2 = area2(i);
     collapsed_ += had_area[i / 3] && !(stored2 > 0);
-    areas.push_back(0.5f * std::sqrt(stored2));
+    areas.push_back(float(0.5 * std::sqrt(stored2)));
     area_ += areas.back();
   }
   // A mesh of only degenerate triangles can still be hit-tested, but not sampled.

@@ -50,6 +50,20 @@ TEST(PerspectiveSensor, FocalLengthSetsTheDiagonalFov) {
               testing::HasSubstr("give either fov or focal_length, not both"));
 }
 
+// A view so narrow that its window on the image plane has no area as a
+// float (importance is one over it) is refused, by fov or focal length.
+TEST(PerspectiveSensor, AViewTooNarrowForFloatIsRefused) {
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='1e-30'/>"
+                               "</sensor></scene>"),
+              testing::HasSubstr("test.xml:1: parameter 'fov' of sensor 'perspective': gives a view too narrow for "
+                                 "single precision (its window on the image plane has no area as a float)"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><sensor type='perspective'><string name='focal_length' "
+                               "value='1e30mm'/></sensor></scene>"),
+              testing::HasSubstr("parameter 'focal_length' of sensor 'perspective': gives a view too narrow"));
+  EXPECT_NO_THROW(test::scene_from_xml(
+      "<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='1e-10'/></sensor></scene>"));
+}
+
 // Without fov or focal_length, Mitsuba's 50 mm lens: on the default 4:3
 // film (768x576) the diagonal's tangent 0.432666 becomes 0.346133 across x.
 TEST(PerspectiveSensor, DefaultIsAFiftyMillimetreLens) {

@@ -1,7 +1,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
 
 #include "core/math/constants.h"
 #include "core/sampling/warp.h"
@@ -104,6 +106,31 @@ TEST(ThinLensSensor, ZeroApertureIsThePinhole) {
   EXPECT_EQ(a.d, b.d);
 }
 
+// A focus far beyond float's squares (1e20, 3.3e38) is infinity for the
+// lens: its rays are the pinhole's directions from their lens points, and
+// light joined to the lens lands back on their raster positions.
+TEST(ThinLensSensor, AFarFocusIsInfinity) {
+  const auto pinhole = test::scene_from_xml(sensor_xml("perspective", ""));
+  for (const char* focus : {"1e20", "3.3e38"}) {
+    const auto lens = test::scene_from_xml(
+        sensor_xml("thinlens", "<float name='aperture_radius' value='0.5'/><float name='focus_distance' value='" +
+                                   std::string(focus) + "'/>"));
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (int i = 0; i < 50; ++i) {
+      const Vec2 raster{u(rng) * 64, u(rng) * 48};
+      const Ray ray = lens->sensor().generate_ray(raster, {u(rng), u(rng)});
+      const Vec3 d = pinhole->sensor().generate_ray(raster, {}).d;
+      EXPECT_NEAR(length(ray.d - d), 0, 1e-6f) << focus;
+      EXPECT_TRUE(std::isfinite(ray.t_min) && std::isfinite(ray.t_max)) << focus;
+      Vec2 back;
+      EXPECT_GT(lens->sensor().We(ray, &back).r, 0) << focus;
+      EXPECT_NEAR(back.x, raster.x, 1e-3f) << focus;
+      EXPECT_NEAR(back.y, raster.y, 1e-3f) << focus;
+    }
+  }
+}
+
 TEST(ThinLensSensor, BadParameters) {
   EXPECT_THAT(test::load_error(sensor_xml("thinlens", "")), HasSubstr("aperture_radius"));
   EXPECT_THAT(test::load_error(sensor_xml("thinlens", "<float name='aperture_radius' value='-1'/>")),
@@ -112,6 +139,10 @@ TEST(ThinLensSensor, BadParameters) {
                                           "<float name='aperture_radius' value='1'/>"
                                           "<float name='focus_distance' value='0'/>")),
               HasSubstr("parameter 'focus_distance' of sensor 'thinlens': must be positive"));
+  EXPECT_THAT(test::load_error(sensor_xml("thinlens", "<float name='aperture_radius' value='2e8'/>")),
+              HasSubstr("parameter 'aperture_radius' of sensor 'thinlens': must be at most 1e8: rays from the "
+                        "lens's edge start beyond what caustica traces in single precision"));
+  EXPECT_NO_THROW(test::scene_from_xml(sensor_xml("thinlens", "<float name='aperture_radius' value='1e8'/>")));
 }
 
 }  // namespace
