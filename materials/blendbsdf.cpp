@@ -12,8 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/bsdf/bsdf.h"
+#include "core/bsdf/combined_traits.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture_parameter.h"
@@ -29,12 +31,13 @@ class BlendBsdf final : public Bsdf {
       throw SceneError(props.where(), "bsdf 'blendbsdf' takes two nested bsdfs, not " + std::to_string(nested.size()));
     first_ = nested[0];
     second_ = nested[1];
+    traits_.emplace(*first_, *second_);
   }
 
-  uint32_t lobes() const override { return first_->lobes() | second_->lobes(); }
-  bool reads_tangents() const override { return first_->reads_tangents() || second_->reads_tangents(); }
-  bool renders_spectral() const override { return first_->renders_spectral() && second_->renders_spectral(); }
-  bool disperses() const override { return first_->disperses() || second_->disperses(); }
+  uint32_t lobes() const override { return traits_->lobes; }
+  bool reads_tangents() const override { return traits_->reads_tangents; }
+  bool renders_spectral() const override { return traits_->renders_spectral; }
+  bool disperses() const override { return traits_->disperses; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override { return eval_with(weight(ctx), ctx, wo, wi); }
 
@@ -85,6 +88,7 @@ class BlendBsdf final : public Bsdf {
 
   std::shared_ptr<Texture> weight_;
   std::shared_ptr<Bsdf> first_, second_;
+  std::optional<CombinedTraits> traits_;
 };
 
 }  // namespace

@@ -9,7 +9,10 @@
 //       <bsdf type="diffuse"/>
 //   </bsdf>
 
+#include <optional>
+
 #include "core/bsdf/bsdf.h"
+#include "core/bsdf/combined_traits.h"
 #include "core/registry/properties.h"
 
 namespace caustica {
@@ -26,14 +29,15 @@ class TwoSidedBsdf final : public Bsdf {
                        "bsdf 'twosided' takes one or two nested bsdfs, found " + std::to_string(nested.size()));
     front_ = nested.front();
     back_ = nested.back();
-    if ((front_->lobes() | back_->lobes()) & kTransmission)
+    traits_.emplace(*front_, *back_);
+    if (traits_->lobes & kTransmission)
       throw SceneError(props.where(), "bsdf 'twosided' cannot wrap a bsdf that transmits light");
   }
 
-  uint32_t lobes() const override { return front_->lobes() | back_->lobes(); }
-  bool reads_tangents() const override { return front_->reads_tangents() || back_->reads_tangents(); }
-  bool renders_spectral() const override { return front_->renders_spectral() && back_->renders_spectral(); }
-  bool disperses() const override { return front_->disperses() || back_->disperses(); }
+  uint32_t lobes() const override { return traits_->lobes; }
+  bool reads_tangents() const override { return traits_->reads_tangents; }
+  bool renders_spectral() const override { return traits_->renders_spectral; }
+  bool disperses() const override { return traits_->disperses; }
 
   Color eval(const BsdfContext& ctx, Vec3 wo, Vec3 wi) const override {
     return wo.z > 0 ? front_->eval(ctx, wo, wi) : back_->eval(ctx, flip(wo), flip(wi));
@@ -56,6 +60,7 @@ class TwoSidedBsdf final : public Bsdf {
 
  private:
   std::shared_ptr<Bsdf> front_, back_;
+  std::optional<CombinedTraits> traits_;
 };
 
 }  // namespace

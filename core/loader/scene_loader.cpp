@@ -101,14 +101,20 @@ class Instantiator {
           throw SceneError(node.where, "shape '" + *id +
                                            "' is used both inside a shapegroup and outside one; give each use its "
                                            "own shape");
+        held_by_parent(held_of_id_[*id]);
         return it->second;
       }
       if (!building_.insert(*id).second) throw SceneError(node.where, "'" + *id + "' refers to itself");
     }
+    held_.push_back({});
     ObjectValue obj = create(node);
+    const Held held = holding(node, held_.back());
+    held_.pop_back();
+    held_by_parent(held);
     if (const std::string* id = node.attribute("id")) {
       building_.erase(*id);
       built_[*id] = obj;
+      held_of_id_[*id] = held;
       if (placed_in_space(obj)) shapes_in_group_[*id] = in_group_ > 0;
     }
     return obj;
@@ -355,6 +361,38 @@ class Instantiator {
 
   Vec3d render_origin_;
   FileResolver resolver_;
+  // What an object holds: the levels of objects below and including it,
+  // through references too (a chain of objects each referring to the one
+  // before is as deep as it is long), and how many BSDFs and textures it
+  // evaluates at each shading point, a referenced one as often as it is
+  // referenced (a chain of blendbsdfs each referring twice to the one
+  // before costs 2^n).
+  struct Held {
+    int levels = 0;
+    double evaluations = 0;
+  };
+  static constexpr double kMaxEvaluations = 4096;
+  static Held holding(const XmlNode& node, const Held& children) {
+    const Held held{children.levels + 1, node.tag == "bsdf" || node.tag == "texture" ? children.evaluations + 1 : 0};
+    if (held.levels > kMaxSceneDepth)
+      throw SceneError(node.where, "objects nested or referring to each other more than " +
+                                       std::to_string(kMaxSceneDepth) + " deep");
+    if (held.evaluations > kMaxEvaluations) {
+      char count[32];
+      std::snprintf(count, sizeof count, "%.3g", held.evaluations);
+      throw SceneError(node.where, "this " + node.tag + " holds, counting a referenced one each time it is used, " +
+                                       count + " BSDFs and textures, all evaluated at every shading point; at most " +
+                                       std::to_string(int(kMaxEvaluations)) + " are allowed");
+    }
+    return held;
+  }
+  void held_by_parent(const Held& held) {
+    if (held_.empty()) return;
+    held_.back().levels = std::max(held_.back().levels, held.levels);
+    held_.back().evaluations += held.evaluations;
+  }
+  std::vector<Held> held_;  // what each object being built holds so far, innermost last
+  std::map<std::string, Held> held_of_id_;
   int depth_ = 0;
   int in_group_ = 0;                             // shapegroups being built around the current object
   std::map<std::string, bool> shapes_in_group_;  // for each shape built with an id, whether inside a group

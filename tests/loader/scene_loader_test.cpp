@@ -441,6 +441,50 @@ TEST(SceneLoader, LongChainsOfReferencesAreRefused) {
               HasSubstr("chain.xml:66: objects nested or referring to each other more than 64 deep"));
 }
 
+// So is a chain declared in order, each object referring to the one
+// before (b0 on line 2 is one level deep, b64 on line 66 would be 65):
+// built one by one, each from the last, it never recursed.
+TEST(SceneLoader, LongChainsOfEarlierObjectsAreRefused) {
+  std::string xml = "<scene version='3.0.0'>\n<bsdf type='diffuse' id='b0'/>\n";
+  for (int i = 1; i < 100; ++i)
+    xml += "<bsdf type='twosided' id='b" + std::to_string(i) + "'><ref id='b" + std::to_string(i - 1) + "'/></bsdf>\n";
+  xml += "<shape type='sphere'><ref id='b99'/></shape></scene>";
+  EXPECT_THAT(test::load_error(xml, "chain.xml"),
+              HasSubstr("chain.xml:66: objects nested or referring to each other more than 64 deep"));
+}
+
+// A chain as deep as allowed (a shape and 63 BSDFs) renders: each twosided
+// works out what it says of itself once, instead of asking its front and
+// back (here one BSDF, asked twice) at every query, 2^62 times down the
+// chain.
+TEST(SceneLoader, ADeepChainOfTwosidedRenders) {
+  std::string xml =
+      "<scene version='3.0.0'><sensor type='perspective'><film type='hdrfilm'><integer name='width' value='4'/>"
+      "<integer name='height' value='4'/></film><transform name='to_world'><lookat origin='0, 0, 4' target='0, 0, "
+      "0' up='0, 1, 0'/></transform></sensor><emitter type='constant'/><bsdf type='diffuse' id='b0'/>";
+  for (int i = 1; i < 63; ++i)
+    xml += "<bsdf type='twosided' id='b" + std::to_string(i) + "'><ref id='b" + std::to_string(i - 1) + "'/></bsdf>";
+  xml += "<shape type='sphere'><ref id='b62'/></shape></scene>";
+  const auto scene = test::scene_from_xml(xml);
+  double sum = 0;
+  for (float v : test::render_scene(scene, 1).resolve()) sum += v;
+  EXPECT_GT(sum, 0);
+}
+
+// A blendbsdf whose two parts are the blend before evaluates 2^n BSDFs at
+// every shading point: refused once a material would evaluate more than
+// 4096 (b12, on line 14, would evaluate 8191).
+TEST(SceneLoader, MaterialsThatEvaluateTooManyBsdfsAreRefused) {
+  std::string xml = "<scene version='3.0.0'>\n<bsdf type='diffuse' id='b0'/>\n";
+  for (int i = 1; i < 20; ++i)
+    xml += "<bsdf type='blendbsdf' id='b" + std::to_string(i) + "'><ref id='b" + std::to_string(i - 1) +
+           "'/><ref id='b" + std::to_string(i - 1) + "'/></bsdf>\n";
+  xml += "<shape type='sphere'><ref id='b19'/></shape></scene>";
+  EXPECT_THAT(test::load_error(xml, "blend.xml"),
+              HasSubstr("blend.xml:14: this bsdf holds, counting a referenced one each time it is used, 8.19e+03 "
+                        "BSDFs and textures, all evaluated at every shading point; at most 4096 are allowed"));
+}
+
 // The excerpt keeps a hostile value's message short.
 TEST(SceneLoader, ErrorsQuoteOnlyAnExcerptOfLongValues) {
   const std::string error =
