@@ -24,7 +24,8 @@ PathSettings read_path_settings(const Properties& props) {
 std::vector<ParamSpec> path_settings_params(std::vector<ParamSpec> more, int64_t rr_depth) {
   std::vector<ParamSpec> params{
       {"max_depth", ParamType::Integer, "-1",
-       "longest path in segments; -1 for no limit, 0 renders black, 1 emitters only, 2 direct light only"},
+       "longest path in segments; -1 for as long as roulette allows, up to 4096; 0 renders black, 1 emitters only, 2 "
+       "direct light only"},
       {"rr_depth", ParamType::Integer, std::to_string(rr_depth),
        "path vertices before Russian roulette may end a path"},
       {"rr_max_survival", ParamType::Float, "0.95", "upper bound on the survival probability, in (0, 1]"},
