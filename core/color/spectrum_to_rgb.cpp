@@ -7,6 +7,7 @@
 
 #include "core/color/cie_tables.h"
 #include "core/color/xyz_to_rec709.h"
+#include "core/files/input_file.h"
 
 namespace caustica {
 namespace {
@@ -63,6 +64,8 @@ SampledSpectrum parse_spectrum_pairs(const std::string& text) {
 }
 
 SampledSpectrum read_spd_file(const std::filesystem::path& file) {
+  if (const std::string problem = input_file_problem(file); !problem.empty())
+    throw std::invalid_argument("spectrum file '" + file.string() + "' " + problem);
   std::ifstream in(file);
   if (!in) throw std::invalid_argument("cannot open spectrum file '" + file.string() + "'");
   SampledSpectrum s;

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/files/input_file.h"
 #include "core/math/transform.h"
 #include "core/media/vdb_file.h"
 #include "core/media/vol_file.h"
@@ -38,6 +39,9 @@ class GridVolume final : public Volume {
       throw props.error("filter_type", "must be trilinear or nearest, not '" + filter + "'");
     nearest_ = filter == "nearest";
     const std::filesystem::path file = props.get_path("filename");
+    // A missing file is named by its reader, which says what it expected.
+    if (const std::string problem = input_file_problem(file); !problem.empty() && problem != "not found")
+      throw props.error("filename", "volume file '" + file.string() + "' " + problem);
     const bool vdb = is_vdb(file);
     const std::string grid_name = props.get_string("grid");
     try {

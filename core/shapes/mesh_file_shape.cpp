@@ -20,6 +20,7 @@
 #include <string>
 
 #include "core/errors/interrupted.h"
+#include "core/files/input_file.h"
 #include "core/registry/properties.h"
 #include "core/shapes/obj_reader.h"
 #include "core/shapes/ply_reader.h"
@@ -32,8 +33,8 @@ namespace {
 
 std::filesystem::path mesh_file(const Properties& props) {
   const std::filesystem::path file = props.get_path("filename");
-  if (!std::filesystem::is_regular_file(file))
-    throw props.error("filename", "mesh file '" + file.string() + "' not found");
+  if (const std::string problem = input_file_problem(file); !problem.empty())
+    throw props.error("filename", "mesh file '" + file.string() + "' " + problem);
   return file;
 }
 

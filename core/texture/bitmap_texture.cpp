@@ -26,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/files/input_file.h"
 #include "core/image/image_limits.h"
 #include "core/math/transform.h"
 #include "core/registry/properties.h"
@@ -109,8 +110,8 @@ class BitmapTexture final : public Texture {
 
  private:
   void load(const Properties& props, const std::filesystem::path& file, bool raw) {
-    if (!std::filesystem::is_regular_file(file))
-      throw props.error("filename", "image file '" + file.string() + "' not found");
+    if (const std::string problem = input_file_problem(file); !problem.empty())
+      throw props.error("filename", "image file '" + file.string() + "' " + problem);
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) throw props.error("filename", "cannot read image '" + file.string() + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();

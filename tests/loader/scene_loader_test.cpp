@@ -299,7 +299,27 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"missing spectrum file",
                  "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
                  "filename='nowhere.spd'/></bsdf></scene>",
-                 "bad.xml:3: <spectrum>: cannot open spectrum file 'nowhere.spd'"},
+                 "bad.xml:3: <spectrum>: spectrum file 'nowhere.spd' not found"},
+        BadInput{"directory as a spectrum file",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "filename='/tmp'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: spectrum file '/tmp' is a directory"},
+        BadInput{"device as a spectrum file",
+                 "<scene version='3.0.0'>\n<bsdf type='diffuse'>\n<spectrum name='reflectance' "
+                 "filename='/dev/zero'/></bsdf></scene>",
+                 "bad.xml:3: <spectrum>: spectrum file '/dev/zero' is not a regular file (a device or a pipe)"},
+        BadInput{"directory as a mesh",
+                 "<scene version='3.0.0'>\n<shape type='ply'>\n<string name='filename' value='/tmp'/></shape></scene>",
+                 "bad.xml:3: parameter 'filename' of shape 'ply': mesh file '/tmp' is a directory"},
+        BadInput{"device as an image",
+                 "<scene version='3.0.0'>\n<texture type='bitmap'>\n<string name='filename' value='/dev/zero'/>"
+                 "</texture></scene>",
+                 "bad.xml:3: parameter 'filename' of texture 'bitmap': image file '/dev/zero' is not a regular file "
+                 "(a device or a pipe)"},
+        BadInput{"directory as a volume",
+                 "<scene version='3.0.0'>\n<volume type='gridvolume'>\n<string name='filename' value='/tmp'/>"
+                 "</volume></scene>",
+                 "bad.xml:3: parameter 'filename' of volume 'gridvolume': volume file '/tmp' is a directory"},
         BadInput{"missing aperture",
                  "<scene version='3.0.0'>\n<sensor type='thinlens'>\n<float name='focus_distance' value='2'/>"
                  "</sensor></scene>",
