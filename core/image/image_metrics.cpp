@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace caustica {
@@ -19,6 +20,27 @@ std::array<int, 3> channel_indices(const Image& image, const char* prefix, const
 }
 
 std::string size_text(const Image& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
+
+// A non-finite value would make every metric non-finite: refused, naming
+// the first pixel that holds one and how many there are.
+void require_finite(const Image& image, const std::array<int, 3>& index, const char* what) {
+  const char* names[] = {"R", "G", "B"};
+  const size_t pixels = size_t(image.width) * image.height, nc = image.channels.size();
+  size_t count = 0, first = 0;
+  int first_channel = 0;
+  for (size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(image.pixels[p * nc + index[c]]) && count++ == 0) {
+        first = p;
+        first_channel = c;
+      }
+  if (count == 0) return;
+  char text[200];
+  std::snprintf(text, sizeof text, "%s has %zu non-finite value%s, the first at pixel (%zu, %zu) in %s (%g)", what,
+                count, count == 1 ? "" : "s", first % size_t(image.width), first / size_t(image.width),
+                names[first_channel], double(image.pixels[first * nc + index[first_channel]]));
+  throw std::invalid_argument(text);
+}
 
 bool has_variance(const Image& image) {
   return image.channel_index("variance.R") >= 0 && image.channel_index("variance.G") >= 0 &&
@@ -49,6 +71,8 @@ ErrorMetrics compare_images(const Image& image, const Image& reference, double r
                                 size_text(reference));
   const auto x_index = channel_indices(image, "", "the image");
   const auto r_index = channel_indices(reference, "", "the reference");
+  require_finite(image, x_index, "the image");
+  require_finite(reference, r_index, "the reference");
   const size_t pixels = size_t(image.width) * image.height;
   const size_t nx = image.channels.size(), nr = reference.channels.size();
   double squared = 0, rel_squared = 0, absolute = 0;

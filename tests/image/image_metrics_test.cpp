@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 namespace caustica {
 namespace {
 
@@ -73,6 +77,28 @@ TEST(ImageMetrics, RejectsMismatchedImages) {
       std::invalid_argument);
   const Image no_green{2, 1, {"R", "B", "A"}, {0, 0, 0, 0, 0, 0}};
   EXPECT_THROW(compare_images(no_green, kReference), std::invalid_argument);
+}
+
+std::string error_of(const Image& image, const Image& reference) {
+  try {
+    compare_images(image, reference);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Non-finite values would make every metric non-finite: the first pixel
+// holding one is named, with the count.
+TEST(ImageMetrics, NonFiniteValuesAreNamed) {
+  Image image{3, 2, {"R", "G", "B"}, std::vector<float>(18, 0.5f)};
+  const Image reference{3, 2, {"R", "G", "B"}, std::vector<float>(18, 0.5f)};
+  image.pixels[(1 * 3 + 2) * 3 + 1] = NAN;       // (2, 1) G
+  image.pixels[(1 * 3 + 0) * 3 + 2] = INFINITY;  // (0, 1) B, earlier in the scan
+  EXPECT_EQ(error_of(image, reference), "the image has 2 non-finite values, the first at pixel (0, 1) in B (inf)");
+  EXPECT_EQ(error_of(reference, image), "the reference has 2 non-finite values, the first at pixel (0, 1) in B (inf)");
+  image.pixels[(1 * 3 + 0) * 3 + 2] = 3e38f;  // large but finite
+  EXPECT_EQ(error_of(image, reference), "the image has 1 non-finite value, the first at pixel (2, 1) in G (nan)");
 }
 
 }  // namespace
