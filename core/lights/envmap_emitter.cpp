@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -55,10 +56,19 @@ class EnvmapEmitter final : public Emitter {
       for (int x = 0; x < width_; ++x) {
         const size_t i = size_t(y) * width_ + x;
         const float* p = &image.pixels[i * channels];
-        const Color c = (grey ? Color(p[0]) : Color(p[0], p[1], p[2])) * scale;
-        if (!std::isfinite(c.r + c.g + c.b) || c.r < 0 || c.g < 0 || c.b < 0)
-          throw props.error("filename", "'" + file.string() + "' has a negative or non-finite value at pixel (" +
-                                            std::to_string(x) + ", " + std::to_string(y) + ")");
+        const Color v = grey ? Color(p[0]) : Color(p[0], p[1], p[2]), c = v * scale;
+        const std::string at = " at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        // Channel by channel: a finite 3e38 in each would overflow their sum.
+        for (const float channel : {v.r, v.g, v.b})
+          if (!std::isfinite(channel) || channel < 0)
+            throw props.error("filename", "'" + file.string() + "' has a negative or non-finite value" + at);
+        for (const float channel : {c.r, c.g, c.b})
+          if (!std::isfinite(channel)) {
+            char text[160];
+            std::snprintf(text, sizeof text, "times %g overflows single precision%s (its value there is %g)",
+                          double(scale), at.c_str(), double(std::max({v.r, v.g, v.b})));
+            throw props.error("scale", "'" + file.string() + "' " + text + "; express the scene in other units");
+          }
         texels_[i] = c;
         weights[i] = c.luminance() * sin_theta;
       }
@@ -68,9 +78,13 @@ class EnvmapEmitter final : public Emitter {
       const double omega = (2 * M_PI / width_) * (std::cos(M_PI * y / height_) - std::cos(M_PI * (y + 1) / height_));
       for (int x = 0; x < width_; ++x) radiant_ += texels_[size_t(y) * width_ + x] * float(omega);
     }
-    bool any = false;
-    for (float w : weights) any = any || w > 0;
-    if (any) distribution_.emplace(weights, width_, height_);
+    // Relative to the largest, so that rows of radiance near float's limit
+    // do not overflow the distribution's sums.
+    const float largest = *std::max_element(weights.begin(), weights.end());
+    if (largest > 0) {
+      for (float& w : weights) w /= largest;
+      distribution_.emplace(weights, width_, height_);
+    }
   }
 
   void prepare(const Bounds3& bounds) override { disk_.fit(bounds); }

@@ -183,5 +183,26 @@ TEST(Envmap, BadMapsAreRefused) {
               HasSubstr("parameter 'filename' of emitter 'envmap'"));
 }
 
+// Values near float's limit: a finite 3e38 texel is no error in the file
+// (its channels' sum would overflow, not its channels), but around a ball
+// of radius 10 the map's power (radiance times the solid angle, times the
+// disk its light enters through) overflows; a scale that takes a texel
+// past float's range is named with the texel.
+TEST(Envmap, RadianceBeyondFloatIsRefusedByWhatOverflows) {
+  const fs::path huge =
+      write_map("caustica_huge.exr", [](int x, int y) { return x == 5 && y == 3 ? Color(3e38f) : Color(1); });
+  EXPECT_NO_THROW(test::scene_from_xml("<scene version='3.0.0'>" + envmap(huge) + "</scene>"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n" + envmap(huge) +
+                               "<shape type='sphere'><float name='radius' value='10'/></shape></scene>"),
+              HasSubstr("test.xml:2: the emitter's power (inf, inf, inf W) overflows single precision; express the "
+                        "scene in other units"));
+  EXPECT_THAT(
+      test::load_error("<scene version='3.0.0'>" +
+                       envmap(write_map("caustica_env.exr", texel), "<float name='scale' value='1e38'/>") + "</scene>"),
+      HasSubstr("parameter 'scale' of emitter 'envmap': '" + (fs::temp_directory_path() / "caustica_env.exr").string() +
+                "' times 1e+38 overflows single precision at pixel (20, 3) (its value there is 30.95); "
+                "express the scene in other units"));
+}
+
 }  // namespace
 }  // namespace caustica
