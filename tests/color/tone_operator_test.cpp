@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -109,6 +110,68 @@ TEST(AcesTonemap, MiddleGreyAndHighlights) {
   EXPECT_NEAR(apply_one(*op, 0.18f), 0.10, 0.03);
   EXPECT_GT(apply_one(*op, 16.0f), 0.75f);
   EXPECT_LE(apply_one(*op, 1e4f), 1.0f);
+}
+
+// An image with black pixels, developed: every operator's output against
+// its formula worked out by the test. Black pixels enter Reinhard's
+// log-average through its offset delta = 1e-6 (log(delta + Lw)); without
+// it one black pixel sends the log-average to zero and every other pixel to
+// white. The per-pixel operators give each pixel what it gets alone.
+const std::vector<float> kWithBlack = {0, 0,    0,    0.05f, 0.05f, 0.05f, 0.3f, 0.3f, 0.3f, 0, 0,
+                                       0, 0.9f, 0.4f, 0.1f,  2,     2,     2,    6,    6,    6};
+
+double rec709_luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+
+TEST(EveryOperatorFormula, ReinhardWithBlackPixels) {
+  const size_t n = kWithBlack.size() / 3;
+  double log_sum = 0, largest = 0;
+  for (size_t p = 0; p < n; ++p)
+    log_sum += std::log(1e-6 + rec709_luminance(kWithBlack[3 * p], kWithBlack[3 * p + 1], kWithBlack[3 * p + 2]));
+  const double scale = 0.18 / std::exp(log_sum / double(n));
+  for (size_t p = 0; p < n; ++p)
+    largest =
+        std::max(largest, scale * rec709_luminance(kWithBlack[3 * p], kWithBlack[3 * p + 1], kWithBlack[3 * p + 2]));
+  std::vector<float> rgb = kWithBlack;
+  make("reinhard")->apply(rgb);
+  for (size_t p = 0; p < n; ++p) {
+    const double lw = rec709_luminance(kWithBlack[3 * p], kWithBlack[3 * p + 1], kWithBlack[3 * p + 2]);
+    const double l = scale * lw, ld = l * (1 + l / (largest * largest)) / (1 + l);
+    for (int c = 0; c < 3; ++c) {
+      const double expected = lw > 0 ? std::min(1.0, kWithBlack[3 * p + c] * ld / lw) : 0.0;
+      EXPECT_NEAR(rgb[3 * p + c], expected, 1e-5) << "pixel " << p << " channel " << c;
+    }
+  }
+  EXPECT_LT(rgb[3], 0.5f) << "a dark pixel stays dark beside black ones";
+}
+
+TEST(EveryOperatorFormula, FilmicWithBlackPixels) {
+  const auto hable = [](double x) {
+    return (x * (0.15 * x + 0.05) + 0.004) / (x * (0.15 * x + 0.5) + 0.06) - 0.02 / 0.3;
+  };
+  std::vector<float> rgb = kWithBlack;
+  make("filmic")->apply(rgb);
+  for (size_t i = 0; i < rgb.size(); ++i)
+    EXPECT_NEAR(rgb[i], std::min(1.0, hable(2.0 * kWithBlack[i]) / hable(11.2)), 1e-6) << i;
+}
+
+TEST(EveryOperatorFormula, NoneWithBlackPixels) {
+  std::vector<float> rgb = kWithBlack;
+  make("none")->apply(rgb);
+  for (size_t i = 0; i < rgb.size(); ++i) EXPECT_EQ(rgb[i], std::min(1.0f, kWithBlack[i])) << i;
+}
+
+// ACES is OpenColorIO's own transform: per pixel, so black pixels beside
+// them change nothing, and black stays black.
+TEST(EveryOperatorFormula, AcesWithBlackPixelsIsPerPixel) {
+  const auto op = make("aces");
+  std::vector<float> rgb = kWithBlack;
+  op->apply(rgb);
+  for (size_t p = 0; p < kWithBlack.size() / 3; ++p) {
+    std::vector<float> alone(kWithBlack.begin() + long(3 * p), kWithBlack.begin() + long(3 * p + 3));
+    op->apply(alone);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(rgb[3 * p + c], alone[c]) << p;
+  }
+  EXPECT_NEAR(rgb[0], 0, 1e-3f);
 }
 
 TEST(ToneOperator, ExposureIsAParameter) {
