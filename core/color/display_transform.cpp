@@ -10,6 +10,21 @@
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace caustica {
+namespace {
+
+// OpenColorIO's own messages for an unknown display, view or look do not
+// say what the config offers; these name `wanted` and list what it has.
+template <class Name>
+void require_named(const std::string& wanted, int count, Name&& name, const std::string& problem) {
+  std::string list;
+  for (int i = 0; i < count; ++i) {
+    if (wanted == name(i)) return;
+    list += (i ? ", " : "") + std::string(name(i));
+  }
+  throw std::runtime_error(problem + " (it has " + (list.empty() ? "none" : list) + ")");
+}
+
+}  // namespace
 
 std::filesystem::path default_ocio_config() {
   if (const char* env = std::getenv("OCIO"); env && *env) return env;
@@ -22,7 +37,13 @@ DisplayTransform::DisplayTransform(const std::filesystem::path& config_path, con
   try {
     const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromFile(config_path.c_str());
     display_ = display.empty() ? config->getDefaultDisplay() : display;
+    require_named(
+        display_, config->getNumDisplays(), [&](int i) { return config->getDisplay(i); },
+        "no display named '" + display_ + "'");
     view_ = view.empty() ? config->getDefaultView(display_.c_str()) : view;
+    require_named(
+        view_, config->getNumViews(display_.c_str()), [&](int i) { return config->getView(display_.c_str(), i); },
+        "display '" + display_ + "' has no view named '" + view_ + "'");
     auto transform = OCIO::DisplayViewTransform::Create();
     transform->setSrc(OCIO::ROLE_SCENE_LINEAR);
     transform->setDisplay(display_.c_str());
@@ -30,7 +51,9 @@ DisplayTransform::DisplayTransform(const std::filesystem::path& config_path, con
     auto pipeline = OCIO::LegacyViewingPipeline::Create();
     pipeline->setDisplayViewTransform(transform);
     if (!look.empty()) {
-      if (!config->getLook(look.c_str())) throw std::runtime_error("no look named '" + look + "'");
+      require_named(
+          look, config->getNumLooks(), [&](int i) { return config->getLookNameByIndex(i); },
+          "no look named '" + look + "'");
       pipeline->setLooksOverrideEnabled(true);
       pipeline->setLooksOverride(look.c_str());
     }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace caustica {
 namespace {
@@ -51,6 +52,25 @@ TEST(ShippedConfig, RawAcesViewsAndLook) {
   EXPECT_NEAR(through(DisplayTransform(kConfig, "sRGB", "Standard", "Bright"), 0.09f), 0.4613561f, 2e-5f);
   EXPECT_THROW(DisplayTransform(kConfig, "sRGB", "Standard", "sepia"), std::runtime_error);
   EXPECT_THROW(DisplayTransform(kConfig, "sRGB", "Filmic"), std::runtime_error);
+}
+
+std::string error_of(const std::string& display, const std::string& view, const std::string& look = "") {
+  try {
+    DisplayTransform(kConfig, display, view, look);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// An unknown display, view or look is named with what the config has.
+TEST(ShippedConfig, UnknownNamesListWhatTheConfigHas) {
+  const std::string config = "OpenColorIO config '" + kConfig.string() + "': ";
+  EXPECT_EQ(error_of("P3", ""), config + "no display named 'P3' (it has sRGB)");
+  EXPECT_EQ(error_of("sRGB", "Filmic"),
+            config + "display 'sRGB' has no view named 'Filmic' (it has Standard, ACES, Raw)");
+  EXPECT_EQ(error_of("", "Filmic"), config + "display 'sRGB' has no view named 'Filmic' (it has Standard, ACES, Raw)");
+  EXPECT_EQ(error_of("sRGB", "Standard", "sepia"), config + "no look named 'sepia' (it has Bright)");
 }
 
 // A studio's config named by $OCIO replaces the shipped one.
