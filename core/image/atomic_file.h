@@ -8,7 +8,8 @@ namespace caustica {
 // Writes a file through `write`, which receives a temporary path beside the
 // destination (same extension, so format detection still works) and must
 // create it; then renames it over the destination in one step. A failed or
-// interrupted write leaves any previous file untouched.
+// interrupted write leaves any previous file untouched. Temporary files
+// that killed processes left in the destination's folder are removed.
 void write_atomically(const std::filesystem::path& destination,
                       const std::function<void(const std::filesystem::path&)>& write);
 

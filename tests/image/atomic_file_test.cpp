@@ -1,9 +1,13 @@
 #include "core/image/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <vector>
 
 namespace caustica {
 namespace {
@@ -57,6 +61,30 @@ TEST(AtomicFile, ThePendingTemporaryFileCanBeRemovedFromASignalHandler) {
   std::ofstream(seen) << "someone else's file";
   remove_pending_temporary_file();
   EXPECT_TRUE(std::filesystem::exists(seen));
+}
+
+// SIGKILL leaves a temporary file no handler could remove: the next write
+// into the folder removes those whose writer no longer exists, and only
+// those (a live writer's, this process's, and files merely named alike).
+TEST(AtomicFile, AKilledWritersTemporaryFileIsRemovedByTheNextWrite) {
+  const auto dir = fresh_dir();
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  ASSERT_GT(child, 0);
+  int status = 0;
+  waitpid(child, &status, 0);
+  const std::string dead = std::to_string(child), alive = std::to_string(getppid()), own = std::to_string(getpid());
+  const std::vector<std::string> stale = {".render.tmp" + dead + ".exr", ".other.tmp" + dead + ".png",
+                                          ".noext.tmp" + dead};
+  const std::vector<std::string> kept = {".render.tmp" + alive + ".exr", ".render.tmp" + own + ".exr",
+                                         "render.tmp" + dead + ".exr",   ".render.tmp" + dead + ".exr.bak",
+                                         ".render.tmpx" + dead + ".exr", "notes.txt"};
+  for (const auto& name : stale) std::ofstream(dir / name) << "left by a killed render";
+  for (const auto& name : kept) std::ofstream(dir / name) << "someone's";
+  write_atomically(dir / "image.exr", [](const std::filesystem::path& tmp) { std::ofstream(tmp) << "new"; });
+  for (const auto& name : stale) EXPECT_FALSE(std::filesystem::exists(dir / name)) << name;
+  for (const auto& name : kept) EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+  EXPECT_EQ(read(dir / "image.exr"), "new");
 }
 
 TEST(AtomicFile, SuccessReplacesInOneStep) {
