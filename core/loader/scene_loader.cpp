@@ -85,6 +85,9 @@ class Instantiator {
   }
 
   ObjectValue build(const XmlNode& node) {
+    // A scene of a million objects (instances) takes long to build: a stop
+    // request is seen between objects.
+    if (stop_request().load()) throw Interrupted("interrupted");
     // Nested objects and chains of references both recurse through here.
     if (depth_ >= kMaxSceneDepth)
       throw SceneError(node.where, "objects nested or referring to each other more than " +

@@ -505,6 +505,20 @@ TEST(SceneLoader, MaterialsThatEvaluateTooManyBsdfsAreRefused) {
                         "BSDFs and textures, all evaluated at every shading point; at most 4096 are allowed"));
 }
 
+// A stop request (Ctrl-C) is seen between the objects a scene builds, so
+// loading a million instances can be interrupted; afterwards loads go on.
+TEST(SceneLoader, AStopRequestInterruptsTheBuild) {
+  std::string xml = "<scene version='3.0.0'><shape type='shapegroup' id='g'><shape type='sphere'/></shape>";
+  for (int i = 0; i < 100; ++i)
+    xml += "<shape type='instance'><ref id='g'/><transform name='to_world'><translate x='" + std::to_string(3 * i) +
+           "'/></transform></shape>";
+  xml += "</scene>";
+  stop_request().store(true);
+  EXPECT_THROW(test::scene_from_xml(xml), Interrupted);
+  stop_request().store(false);
+  EXPECT_EQ(test::scene_from_xml(xml)->shapes().size(), 100u);
+}
+
 // The excerpt keeps a hostile value's message short.
 TEST(SceneLoader, ErrorsQuoteOnlyAnExcerptOfLongValues) {
   const std::string error =
