@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <mutex>
+
+#include "core/media/vdb_header_check.h"
 #endif
 
 namespace caustica {
@@ -37,6 +39,7 @@ VolGrid read_vdb_file(const std::filesystem::path& file, const std::string& grid
   static std::once_flag initialised;
   std::call_once(initialised, [] { openvdb::initialize(); });
 
+  if (const std::string problem = vdb_header_problem(file); !problem.empty()) throw fail(problem);
   openvdb::GridBase::Ptr base;
   try {
     openvdb::io::File in(file.string());

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "core/media/vdb_file.h"
 #include "tests/support/media.h"
@@ -187,6 +188,22 @@ TEST(VdbVolume, BadGridsAreRefused) {
   std::ofstream(text) << "not a grid";
   EXPECT_THAT(volume_error(text), HasSubstr("text.vdb: cannot be read as an OpenVDB file"));
   EXPECT_THAT(volume_error(temp_file("missing.vdb")), HasSubstr("missing.vdb: cannot be read as an OpenVDB file"));
+}
+
+// A file cut short would make OpenVDB allocate what its broken lengths
+// claim (gigabytes from the first 150 bytes of a grid file): the header is
+// checked against the file's size first, whatever the cut.
+TEST(VdbVolume, AFileCutShortIsRefusedBeforeOpenVdbReadsIt) {
+  const auto whole = ramp_file();
+  std::ifstream in(whole, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto cut = temp_file("cut.vdb");
+  for (const size_t length : {size_t(20), size_t(60), size_t(100), size_t(150), size_t(200), bytes.size() - 1}) {
+    std::ofstream(cut, std::ios::binary).write(bytes.data(), std::streamsize(length));
+    EXPECT_THAT(volume_error(cut), HasSubstr("cut.vdb: is cut short or corrupt: ")) << length;
+  }
+  EXPECT_THAT(volume_error(cut), HasSubstr("grid 1 ends at byte " + std::to_string(bytes.size()) + " of a file of " +
+                                           std::to_string(bytes.size() - 1) + " bytes"));
 }
 
 #else
