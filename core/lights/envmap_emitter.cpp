@@ -57,16 +57,16 @@ class EnvmapEmitter final : public Emitter {
         const size_t i = size_t(y) * width_ + x;
         const float* p = &image.pixels[i * channels];
         const Color v = grey ? Color(p[0]) : Color(p[0], p[1], p[2]), c = v * scale;
-        const std::string at = " at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const auto at = [&] { return " at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")"; };
         // Channel by channel: a finite 3e38 in each would overflow their sum.
         for (const float channel : {v.r, v.g, v.b})
           if (!std::isfinite(channel) || channel < 0)
-            throw props.error("filename", "'" + file.string() + "' has a negative or non-finite value" + at);
+            throw props.error("filename", "'" + file.string() + "' has a negative or non-finite value" + at());
         for (const float channel : {c.r, c.g, c.b})
           if (!std::isfinite(channel)) {
             char text[160];
             std::snprintf(text, sizeof text, "times %g overflows single precision%s (its value there is %g)",
-                          double(scale), at.c_str(), double(std::max({v.r, v.g, v.b})));
+                          double(scale), at().c_str(), double(std::max({v.r, v.g, v.b})));
             throw props.error("scale", "'" + file.string() + "' " + text + "; express the scene in other units");
           }
         texels_[i] = c;
