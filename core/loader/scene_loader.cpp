@@ -107,7 +107,12 @@ class Instantiator {
         held_by_parent(held_of_id_[*id]);
         return it->second;
       }
-      if (!building_.insert(*id).second) throw SceneError(node.where, "'" + *id + "' refers to itself");
+      if (const auto at = std::find(building_.begin(), building_.end(), *id); at != building_.end()) {
+        std::string cycle;
+        for (auto it = at; it != building_.end(); ++it) cycle += "'" + *it + "' -> ";
+        throw SceneError(node.where, "references form a cycle: " + cycle + "'" + *id + "'");
+      }
+      building_.push_back(*id);
     }
     held_.push_back({});
     ObjectValue obj = create(node);
@@ -115,7 +120,7 @@ class Instantiator {
     held_.pop_back();
     held_by_parent(held);
     if (const std::string* id = node.attribute("id")) {
-      building_.erase(*id);
+      building_.pop_back();
       built_[*id] = obj;
       held_of_id_[*id] = held;
       if (placed_in_space(obj)) shapes_in_group_[*id] = in_group_ > 0;
@@ -138,6 +143,7 @@ class Instantiator {
   int textures = 0;                    // texture plugins built, for the scene features
   std::vector<GivenSpectrum> spectra;  // colours given as spectra, for the scene features
   std::vector<Animation> animations;   // timed against the shutter once the sensor is built
+  std::set<const Emitter*> attached;   // area emitters a shape has taken, nested or by reference
 
  private:
   void collect_ids(const XmlNode& node, bool is_root) {
@@ -357,6 +363,7 @@ class Instantiator {
         throw SceneError(node.where, e.what());
       }
       shape->set_emitter(emitter.get());
+      attached.insert(emitter.get());
       // It emits from the shape's outer side, into the exterior medium.
       if (shape->bounds_media()) emitter->set_medium(props.get_object<Medium>("exterior"));
     }
@@ -401,7 +408,7 @@ class Instantiator {
   std::map<std::string, bool> shapes_in_group_;  // for each shape built with an id, whether inside a group
   std::map<std::string, const XmlNode*> ids_;
   std::map<std::string, ObjectValue> built_;
-  std::set<std::string> building_;
+  std::vector<std::string> building_;  // the ids being built, outermost first
 };
 
 // Light selection and photon emission weigh emitters by power, in float.
@@ -443,6 +450,9 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
   std::shared_ptr<Sensor> sensor;
   std::shared_ptr<Integrator> integrator;
   std::shared_ptr<ToneOperator> tone_operator;
+  // A top-level area emitter is a shape's if a shape refers to it, before
+  // or after it in the file (Mitsuba instantiates the whole tree at once).
+  std::vector<std::pair<const Emitter*, SourceLocation>> top_level_area;
   for (const XmlNode& node : root.children) {
     if (node.tag == "path") continue;
     if (!kObjectTags.count(node.tag) && node.tag != "ref")
@@ -463,9 +473,12 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
       if (tone_operator) throw SceneError(node.where, "a scene may have only one tonemap");
       tone_operator = std::static_pointer_cast<ToneOperator>(obj.object);
     } else if (node.tag == "emitter" && std::static_pointer_cast<Emitter>(obj.object)->is_area()) {
-      throw SceneError(node.where, "an area emitter must be nested in a shape");
+      top_level_area.emplace_back(std::static_pointer_cast<Emitter>(obj.object).get(), node.where);
     }
   }
+  for (const auto& [emitter, where] : top_level_area)
+    if (!inst.attached.count(emitter))
+      throw SceneError(where, "an area emitter must be nested in a shape or referenced by one (<ref id=\"...\"/>)");
   if (!sensor) sensor = Registry::instance().create_default<Sensor>("sensor", "perspective", root.where);
   if (!integrator) integrator = make_integrator("path");
   for (const auto& animation : inst.animations)

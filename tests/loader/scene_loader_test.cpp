@@ -326,7 +326,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "bad.xml:2: sensor 'thinlens' requires parameter 'aperture_radius'"},
         BadInput{"top-level area emitter",
                  "<scene version='3.0.0'>\n<emitter type='area'><rgb name='radiance' value='1'/></emitter></scene>",
-                 "bad.xml:2: an area emitter must be nested in a shape"},
+                 "bad.xml:2: an area emitter must be nested in a shape or referenced by one (<ref id=\"...\"/>)"},
         BadInput{"point light in a shape",
                  "<scene version='3.0.0'>\n<shape type='cube'>\n<emitter type='point'/></shape></scene>",
                  "bad.xml:2: only an area emitter can be nested in a shape"},
