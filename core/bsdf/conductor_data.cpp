@@ -1,11 +1,14 @@
 #include "core/bsdf/conductor_data.h"
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <tuple>
 #include <utility>
 
 #include "core/registry/properties.h"
 #include "core/spectral/metal_ior_tables.h"
+#include "core/spectral/wavelengths.h"
 
 namespace caustica {
 
@@ -17,7 +20,8 @@ struct NamedConductor {
 };
 
 // RGB approximations of measured optical constants (eta, k), at about 650,
-// 550 and 450 nm.
+// 550 and 450 nm. The other named metals are read at exactly those.
+constexpr double kChannelWavelengthsNm[3] = {650, 550, 450};
 const NamedConductor kConductors[] = {
     {"Ag", {0.155f, 0.117f, 0.138f}, {4.828f, 3.122f, 2.147f}},
     {"Al", {1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}},
@@ -25,16 +29,21 @@ const NamedConductor kConductors[] = {
     {"Cu", {0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}},
 };
 
-// A metal's published eta and k as two spectra.
+// A metal's measured eta and k as two spectra. A table that stops short of
+// the range spectral transport samples is held at its last measured value
+// (a spectrum is zero outside its samples, and eta = k = 0 is a mirror).
 std::pair<std::shared_ptr<const SampledSpectrum>, std::shared_ptr<const SampledSpectrum>> measured(
-    const std::string& symbol) {
+    std::span<const MetalIorSample> table) {
   SampledSpectrum eta, k;
-  for (const MetalIorSample& s : metal_ior_table(symbol)) {
-    eta.nm.push_back(s.nm);
+  const auto add = [&](double nm, const MetalIorSample& s) {
+    eta.nm.push_back(nm);
     eta.values.push_back(s.eta);
-    k.nm.push_back(s.nm);
+    k.nm.push_back(nm);
     k.values.push_back(s.k);
-  }
+  };
+  if (table.front().nm > kMinWavelengthNm) add(kMinWavelengthNm, table.front());
+  for (const MetalIorSample& s : table) add(s.nm, s);
+  if (table.back().nm < kMaxWavelengthNm) add(kMaxWavelengthNm, table.back());
   return {std::make_shared<const SampledSpectrum>(std::move(eta)),
           std::make_shared<const SampledSpectrum>(std::move(k))};
 }
@@ -42,20 +51,31 @@ std::pair<std::shared_ptr<const SampledSpectrum>, std::shared_ptr<const SampledS
 }  // namespace
 
 std::optional<ConductorIor> named_conductor(const std::string& name) {
-  for (const auto& c : kConductors)
-    if (name == c.name) {
-      ConductorIor ior;
-      ior.eta = c.eta;
-      ior.k = c.k;
-      std::tie(ior.eta_spectrum, ior.k_spectrum) = measured(name);
-      return ior;
-    }
-  return std::nullopt;
+  const std::span<const MetalIorSample> table = metal_ior_table(name);
+  if (table.empty()) return std::nullopt;
+  ConductorIor ior;
+  std::tie(ior.eta_spectrum, ior.k_spectrum) = measured(table);
+  const auto known = std::find_if(std::begin(kConductors), std::end(kConductors),
+                                  [&](const NamedConductor& c) { return name == c.name; });
+  if (known != std::end(kConductors)) {
+    ior.eta = known->eta;
+    ior.k = known->k;
+  } else {
+    // RGB transport reads the measurement at the wavelengths standing for
+    // its channels.
+    const auto channels = [](const SampledSpectrum& s) {
+      return Color(float(s.at(kChannelWavelengthsNm[0])), float(s.at(kChannelWavelengthsNm[1])),
+                   float(s.at(kChannelWavelengthsNm[2])));
+    };
+    ior.eta = channels(*ior.eta_spectrum);
+    ior.k = channels(*ior.k_spectrum);
+  }
+  return ior;
 }
 
 std::vector<std::string> conductor_names() {
   std::vector<std::string> names;
-  for (const auto& c : kConductors) names.emplace_back(c.name);
+  for (std::string_view name : metal_ior_names()) names.emplace_back(name);
   return names;
 }
 
@@ -81,6 +101,10 @@ ConductorIor absolute_ior(const Properties& props) {
   if (props.has("eta") || props.has("k"))
     throw props.error("material", "give either a material or eta and k, not both");
   const auto known = named_conductor(material);
+  if (!known && metal_ior_unavailable(material))
+    throw props.error("material", "Mitsuba's measured '" + material +
+                                      "' is not included (its tables were not available to caustica); give its "
+                                      "eta and k, as numbers or spectra");
   if (!known)
     throw props.error("material",
                       "unknown conductor '" + material + "' (known: none, " + join_names(conductor_names()) + ")");
@@ -101,7 +125,8 @@ ConductorIor conductor_ior(const Properties& props) {
 
 std::vector<ParamSpec> conductor_ior_params() {
   return {
-      {"material", ParamType::String, "none", "metal by chemical symbol (Ag, Al, Au, Cu), or none to use eta and k"},
+      {"material", ParamType::String, "none",
+       "measured metal by Mitsuba's name (Ag, Al, Au, Cu, Cr, W, TiN, ...), or none to use eta and k"},
       {"eta", ParamType::Color, "0", "real part of the complex index of refraction, per channel or as a spectrum"},
       {"k", ParamType::Color, "1", "imaginary part (absorption) of the complex index, per channel or as a spectrum"},
       {"ext_eta", ParamType::Float, "1", "index of the outside, which eta and k are divided by (Mitsuba 0.x)"}};

@@ -1,5 +1,7 @@
 #include "core/spectral/metal_ior_tables.h"
 
+#include <vector>
+
 namespace caustica {
 
 namespace {
@@ -58,6 +60,22 @@ const MetalIorSample kCopper[] = {
     {704.5f, 0.21f, 4.205f}, {756.0f, 0.24f, 4.665f}, {821.1f, 0.26f, 5.18f},  {892.0f, 0.3f, 5.768f},
 };
 
+struct NamedTable {
+  const char* name;
+  std::vector<MetalIorSample> samples;
+};
+
+// The other names Mitsuba 3 accepts, from the files its data folder holds.
+const NamedTable kMitsubaTables[] = {
+#include "core/spectral/metal_ior_data.inc"
+};
+
+// Names Mitsuba 3 accepts whose pair of files was not available to take the
+// tables from (see metal_ior_data.inc).
+const char* const kUnavailable[] = {"AlAs",       "AlAs_palik", "AlSb_palik", "HgTe", "HgTe_palik",
+                                    "K",          "Li",         "Li_palik",   "Se",   "SnTe",
+                                    "SnTe_palik", "Te",         "Te_palik",   "ThF4", "ThF4_palik"};
+
 }  // namespace
 
 std::span<const MetalIorSample> metal_ior_table(std::string_view symbol) {
@@ -65,7 +83,21 @@ std::span<const MetalIorSample> metal_ior_table(std::string_view symbol) {
   if (symbol == "Al") return kAluminium;
   if (symbol == "Au") return kGold;
   if (symbol == "Cu") return kCopper;
+  for (const NamedTable& table : kMitsubaTables)
+    if (symbol == table.name) return table.samples;
   return {};
+}
+
+std::vector<std::string_view> metal_ior_names() {
+  std::vector<std::string_view> names = {"Ag", "Al", "Au", "Cu"};
+  for (const NamedTable& table : kMitsubaTables) names.emplace_back(table.name);
+  return names;
+}
+
+bool metal_ior_unavailable(std::string_view symbol) {
+  for (const char* name : kUnavailable)
+    if (symbol == name) return true;
+  return false;
 }
 
 }  // namespace caustica

@@ -1,3 +1,4 @@
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@ namespace caustica {
 namespace {
 
 using test::direction;
+using ::testing::HasSubstr;
 
 const float kThetas[] = {0.0f, 0.5f, 1.0f, 1.4f, 1.5607f};
 
@@ -140,6 +142,56 @@ TEST(ConductorBsdf, BadInput) {
   const std::string negative = test::load_error(scene("<bsdf type='conductor'><float name='k' value='-1'/></bsdf>"));
   EXPECT_NE(negative.find("negative"), std::string::npos) << negative;
   EXPECT_NE(negative.find("test.xml:2"), std::string::npos) << negative;
+}
+
+// Every material name Mitsuba 3's conductor accepts (its plugin reference)
+// is accepted, or refused by a message saying it is Mitsuba's and why it is
+// missing; 50 of the 65 have tables.
+TEST(ConductorBsdf, EveryNameMitsubaAccepts) {
+  const char* const names[] = {
+      "a-C",        "Ag",       "Al",         "AlAs",     "AlAs_palik", "AlSb",     "AlSb_palik", "Au",
+      "Be",         "Be_palik", "Cr",         "CsI",      "CsI_palik",  "Cu",       "Cu_palik",   "Cu2O",
+      "Cu2O_palik", "CuO",      "CuO_palik",  "d-C",      "d-C_palik",  "Hg",       "Hg_palik",   "HgTe",
+      "HgTe_palik", "Ir",       "Ir_palik",   "K",        "K_palik",    "Li",       "Li_palik",   "MgO",
+      "MgO_palik",  "Mo",       "Mo_palik",   "Na_palik", "Nb",         "Nb_palik", "Ni_palik",   "Rh",
+      "Rh_palik",   "Se",       "Se_palik",   "SiC",      "SiC_palik",  "SnTe",     "SnTe_palik", "Ta",
+      "Ta_palik",   "Te",       "Te_palik",   "ThF4",     "ThF4_palik", "TiC",      "TiC_palik",  "TiN",
+      "TiN_palik",  "TiO2",     "TiO2_palik", "VC",       "VC_palik",   "V_palik",  "VN",         "VN_palik",
+      "W"};
+  int loaded = 0;
+  for (const std::string name : names) {
+    for (const char* type : {"conductor", "roughconductor"}) {
+      const std::string error = test::load_error("<scene version='3.0.0'><bsdf type='" + std::string(type) +
+                                                 "'><string name='material' value='" + name + "'/></bsdf></scene>");
+      if (error.empty())
+        loaded += std::string(type) == "conductor";
+      else
+        EXPECT_THAT(error, HasSubstr("Mitsuba's measured '" + name + "' is not included")) << name;
+    }
+  }
+  EXPECT_EQ(loaded, 50);
+  EXPECT_EQ(conductor_names().size(), 50u);
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><bsdf type='conductor'><string name='material' "
+                               "value='Zz'/></bsdf></scene>"),
+              HasSubstr("unknown conductor 'Zz' (known: none, Ag, Al, Au, Cu, a-C,"));
+}
+
+// RGB transport reads Mitsuba's tables at 650, 550 and 450 nm. Chromium's
+// samples around 550 nm (Mitsuba's data/ior/Cr.*.spd): 532.102966 nm (eta
+// 2.98, k 4.45) and 558.468018 nm (3.18, 4.41), linear in between; AlSb's
+// table ends at 590.381042 nm (4.01, 0.006), where red is held.
+TEST(ConductorBsdf, MitsubasTablesAtTheChannelWavelengths) {
+  const double t = (550 - 532.102966) / (558.468018 - 532.102966);
+  const auto chromium = named_conductor("Cr");
+  ASSERT_TRUE(chromium);
+  EXPECT_NEAR(chromium->eta.g, 2.98 + t * (3.18 - 2.98), 1e-5);
+  EXPECT_NEAR(chromium->k.g, 4.45 + t * (4.41 - 4.45), 1e-5);
+  const auto alsb = named_conductor("AlSb");
+  ASSERT_TRUE(alsb);
+  EXPECT_FLOAT_EQ(alsb->eta.r, 4.01f);
+  EXPECT_FLOAT_EQ(alsb->k.r, 0.006f);
+  // Spectral transport holds it there too, rather than reading zeros (a mirror).
+  EXPECT_FLOAT_EQ(float(alsb->eta_spectrum->at(800)), 4.01f);
 }
 
 }  // namespace
