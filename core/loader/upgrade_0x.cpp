@@ -1,10 +1,15 @@
 #include "core/loader/upgrade_0x.h"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <sstream>
+
+#include "core/color/srgb_transfer.h"
 
 namespace caustica {
 namespace {
@@ -35,6 +40,7 @@ const Ignored kIgnored[] = {
     {"integrator", "light_image", "bdpt always joins light paths to the camera"},
     {"integrator", "sample_direct", "bdpt always samples every strategy"},
     {"emitter", "sampling_weight", "emitters are chosen in proportion to their power"},
+    {"sampler", "dimension", "caustica's samplers draw as many dimensions as each path needs"},
     {"bsdf", "preserve_colors", "the material's colours are used as given"}};
 
 bool has_name(const XmlNode& child, const char* name) {
@@ -63,6 +69,28 @@ void upgrade_uv_transform(XmlNode& bitmap) {
   bitmap.children.push_back(std::move(transform));
 }
 
+// 0.x bitmaps override the file's transfer function by `gamma`: 1 reads
+// the values as stored (caustica's raw), -1 (the default) as the file says.
+// Their MIP-mapped filters (ewa, the default, and trilinear) are read as
+// bilinear: caustica keeps no MIP maps.
+void upgrade_bitmap(XmlNode& bitmap, std::vector<std::string>& notes) {
+  for (XmlNode& child : bitmap.children) {
+    const std::string* value = child.attribute("value");
+    if (!value) continue;
+    if (has_name(child, "gamma") && (*value == "1" || *value == "1.0")) {
+      child = XmlNode{"boolean", {{"name", "raw"}, {"value", "true"}}, {}, child.where};
+    } else if (has_name(child, "filter_type") && (*value == "ewa" || *value == "trilinear")) {
+      notes.push_back(child.where.str() + ": filter_type '" + *value +
+                      "' (Mitsuba 0.x) is read as bilinear: caustica keeps no MIP maps");
+      child = XmlNode{"string", {{"name", "filter_type"}, {"value", "bilinear"}}, {}, child.where};
+    }
+  }
+  std::erase_if(bitmap.children, [](const XmlNode& child) {
+    const std::string* value = child.attribute("value");
+    return has_name(child, "gamma") && value && (*value == "-1" || *value == "-1.0");
+  });
+}
+
 // 0.x sensors give the shutter's opening and how long it stays open
 // (shutter_open_time); caustica's give its opening and closing.
 void upgrade_shutter(XmlNode& sensor) {
@@ -86,7 +114,47 @@ void upgrade_shutter(XmlNode& sensor) {
   *duration = XmlNode{"float", {{"name", "shutter_close"}, {"value", close}}, {}, duration->where};
 }
 
+// "#rrggbb" as three numbers in [0, 1], or none.
+std::optional<std::array<float, 3>> parse_hex_colour(const std::string& text) {
+  if (text.size() != 7 || text[0] != '#') return std::nullopt;
+  std::array<float, 3> out;
+  for (int i = 0; i < 3; ++i) {
+    unsigned byte = 0;
+    const char* begin = text.data() + 1 + 2 * i;
+    const auto [end, ec] = std::from_chars(begin, begin + 2, byte, 16);
+    if (ec != std::errc() || end != begin + 2) return std::nullopt;
+    out[i] = float(byte) / 255;
+  }
+  return out;
+}
+
+// One number or three, separated by commas or spaces, as <rgb> takes them.
+std::optional<std::array<float, 3>> parse_numbers(const std::string& text) {
+  std::string spaced = text;
+  std::replace(spaced.begin(), spaced.end(), ',', ' ');
+  std::istringstream in(spaced);
+  std::vector<float> values;
+  for (float v; in >> v;) values.push_back(v);
+  if (!in.eof() || (values.size() != 1 && values.size() != 3)) return std::nullopt;
+  if (values.size() == 1) return std::array<float, 3>{values[0], values[0], values[0]};
+  return std::array<float, 3>{values[0], values[1], values[2]};
+}
+
 }  // namespace
+
+void upgrade_srgb(XmlNode& srgb) {
+  srgb.tag = "rgb";
+  for (auto& [key, value] : srgb.attributes) {
+    if (key != "value") continue;
+    auto encoded = parse_hex_colour(value);
+    if (!encoded) encoded = parse_numbers(value);
+    if (!encoded) return;
+    char text[96];
+    std::snprintf(text, sizeof text, "%.9g, %.9g, %.9g", double(srgb_to_linear((*encoded)[0])),
+                  double(srgb_to_linear((*encoded)[1])), double(srgb_to_linear((*encoded)[2])));
+    value = text;
+  }
+}
 
 void upgrade_object_from_0x(XmlNode& object, std::vector<std::string>& notes) {
   const std::string* type_attribute = object.attribute("type");
@@ -99,7 +167,15 @@ void upgrade_object_from_0x(XmlNode& object, std::vector<std::string>& notes) {
     for (const Rename& r : kRenames)
       if (object.tag == r.tag && (!*r.type || type == r.type) && *name == r.from) *name = r.to;
   }
-  if (object.tag == "texture" && type == "bitmap") upgrade_uv_transform(object);
+  if (object.tag == "texture" && (type == "bitmap" || type == "checkerboard")) upgrade_uv_transform(object);
+  if (object.tag == "texture" && type == "bitmap") upgrade_bitmap(object, notes);
+  if (object.tag == "integrator" && type == "volpath_simple") {
+    notes.push_back(object.where.str() +
+                    ": integrator 'volpath_simple' (Mitsuba 0.x) is rendered by volpath, "
+                    "which samples the same paths and also weighs them by MIS");
+    for (auto& [key, value] : object.attributes)
+      if (key == "type") value = "volpath";
+  }
   if (object.tag == "sensor") upgrade_shutter(object);
   std::erase_if(object.children, [&](const XmlNode& child) {
     for (const Ignored& i : kIgnored)

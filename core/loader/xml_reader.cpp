@@ -73,7 +73,7 @@ void upgrade_from_0x(XmlNode& node) {
   if (node.tag == "lookAt")
     node.tag = "lookat";
   else if (node.tag == "srgb")
-    node.tag = "rgb";
+    upgrade_srgb(node);
   for (auto& [key, value] : node.attributes)
     if (key == "name") value = camel_to_snake(value);
 }

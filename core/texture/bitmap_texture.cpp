@@ -26,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/color/srgb_transfer.h"
 #include "core/files/input_file.h"
 #include "core/image/image_limits.h"
 #include "core/math/transform.h"
@@ -36,9 +37,6 @@ namespace caustica {
 namespace {
 
 enum class WrapMode { Repeat, Mirror, Clamp };
-
-// The sRGB electro-optical transfer function, IEC 61966-2-1.
-float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 // A pixel index, possibly outside [0, n), mapped into it.
 int wrap(int i, int n, WrapMode mode) {

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <tuple>
@@ -193,6 +194,59 @@ TEST(SceneLoader, ZeroPointSixParametersAreUpgradedOrSaidToBeIgnored) {
   EXPECT_EQ(scene->shapes()[2]->bsdf()->albedo(at, {0, 0, 1}).r, 0);
   at.uv = {1.5f, 0.5f};
   EXPECT_GT(scene->shapes()[2]->bsdf()->albedo(at, {0, 0, 1}).r, 0.9f);
+}
+
+// What real 0.x files hold (found by the compatibility corpus,
+// scenes/compat/refused): <srgb> colours, hex ones included, decoded from
+// sRGB; a bitmap's gamma 1 as raw and its ewa/trilinear filters as bilinear;
+// a checkerboard's uscale; a sampler's dimension; volpath_simple.
+TEST(SceneLoader, ZeroPointSixColoursTexturesAndSamplersAreUpgraded) {
+  const auto checker = std::filesystem::temp_directory_path() / "caustica_upgrade_gamma.ppm";
+  {
+    // 1x1 of value 128: 128/255 raw, 0.2158605 decoded.
+    std::ofstream out(checker, std::ios::binary);
+    out << "P6\n1 1\n255\n";
+    out.put(char(128)).put(char(128)).put(char(128));
+  }
+  const auto scene = load_scene_string(
+      "<scene version='0.6.0'>\n<integrator type='volpath_simple'/>\n<sensor type='perspective'>"
+      "<sampler type='ldsampler'><integer name='dimension' value='4'/></sampler></sensor>\n"
+      "<shape type='sphere'><bsdf type='diffuse'><srgb name='reflectance' value='#3366aa'/></bsdf></shape>\n"
+      "<shape type='sphere'><bsdf type='diffuse'><srgb name='reflectance' value='0.5, 0.04, 1'/></bsdf></shape>\n"
+      "<shape type='sphere'><bsdf type='diffuse'><texture type='bitmap' name='reflectance'><string "
+      "name='filename' value='" +
+          checker.string() +
+          "'/><float name='gamma' value='1'/>\n<string name='filterType' value='ewa'/></texture></bsdf></shape>\n"
+          "<shape type='sphere'><bsdf type='diffuse'><texture type='checkerboard' name='reflectance'>"
+          "<float name='uscale' value='4'/></texture></bsdf></shape></scene>",
+      "old.xml");
+  EXPECT_THAT(scene.integrator->describe(), StartsWith("volpath"));
+  EXPECT_THAT(scene.warnings,
+              testing::ElementsAre(
+                  "old.xml:2: integrator 'volpath_simple' (Mitsuba 0.x) is rendered by volpath, which samples the "
+                  "same paths and also weighs them by MIS",
+                  "old.xml:3: parameter 'dimension' of sampler 'ldsampler' (Mitsuba 0.x) is ignored: caustica's "
+                  "samplers draw as many dimensions as each path needs",
+                  "old.xml:7: filter_type 'ewa' (Mitsuba 0.x) is read as bilinear: caustica keeps no MIP maps"));
+  // sRGB decoding, IEC 61966-2-1: ((c + 0.055) / 1.055)^2.4 above 0.04045, c / 12.92 below.
+  const auto decoded = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
+  const BsdfContext ctx;
+  const Color hex = scene->shapes()[0]->bsdf()->albedo(ctx, {0, 0, 1});
+  EXPECT_NEAR(hex.r, decoded(0x33 / 255.0), 1e-6);
+  EXPECT_NEAR(hex.g, decoded(0x66 / 255.0), 1e-6);
+  EXPECT_NEAR(hex.b, decoded(0xaa / 255.0), 1e-6);
+  const Color numbers = scene->shapes()[1]->bsdf()->albedo(ctx, {0, 0, 1});
+  EXPECT_NEAR(numbers.r, 0.21404114, 1e-6);
+  EXPECT_NEAR(numbers.g, 0.04 / 12.92, 1e-7);
+  EXPECT_NEAR(numbers.b, 1, 1e-6);
+  EXPECT_NEAR(scene->shapes()[2]->bsdf()->albedo(ctx, {0, 0, 1}).g, 128 / 255.0, 1e-6);
+  // A checkerboard has two checks a unit of u; scaled by 4, u 0.15 (0.6)
+  // and u 0.05 (0.2) fall in different checks, unscaled in the same one.
+  BsdfContext at;
+  at.uv = {0.15f, 0.1f};
+  const Color check = scene->shapes()[3]->bsdf()->albedo(at, {0, 0, 1});
+  at.uv = {0.05f, 0.1f};
+  EXPECT_NE(check, scene->shapes()[3]->bsdf()->albedo(at, {0, 0, 1}));
 }
 
 struct BadInput {
