@@ -36,4 +36,11 @@ class PerspectiveProjection {
 // The parameters PerspectiveProjection reads.
 std::vector<ParamSpec> perspective_projection_params();
 
+// The tangents of the half fields of view across x and y that fov (or
+// focal_length) and fov_axis give an image of w x h, as Mitsuba defines
+// them; bad values are errors naming the parameter.
+Vec2 field_of_view_tangents(const Properties& props, float w, float h);
+// The parameters field_of_view_tangents reads.
+std::vector<ParamSpec> field_of_view_params();
+
 }  // namespace caustica

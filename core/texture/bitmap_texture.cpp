@@ -104,6 +104,7 @@ class BitmapTexture final : public Texture {
   }
 
   Color mean() const override { return mean_; }
+  std::optional<Vec2i> resolution() const override { return Vec2i{width_, height_}; }
   ValueRange range() const override { return range_; }
 
  private:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "core/math/color.h"
 #include "core/math/sampled_spectrum.h"
@@ -24,6 +25,8 @@ class Texture : public Plugin {
   // The spectrum the texture stands for, where it is one given as such
   // (spectral transport reads it in place of eval's colour).
   virtual const SampledSpectrum* spectrum() const { return nullptr; }
+  // Width and height in texels, for a texture that has them (an image).
+  virtual std::optional<Vec2i> resolution() const { return std::nullopt; }
 };
 
 // What an rgb, spectrum or float value stands for where a texture is accepted.
