@@ -20,6 +20,9 @@ struct SurfaceInteraction {
   Vec3 dpdu, dpdv;  // surface tangents along the (u, v) parametrisation
   float t = kInfinity;
   const Shape* shape = nullptr;
+  // The primitive Embree met within its geometry (a mesh's triangle) and the
+  // scene's shape it belongs to, by its place in the scene's list.
+  unsigned prim = 0, shape_index = 0;
   float time = 0;  // the time of the ray that met the surface (see Ray::time)
 
   Ray spawn(Vec3 d) const { return {offset_ray_origin(p, p_error, ng, d), d, kInfinity, 0, time}; }

@@ -52,6 +52,7 @@ void Properties::add_child(ObjectValue child, const SourceLocation& where, const
                                 "> (those that do: " + join_names(params) + ")");
   }
   children_.emplace_back(std::move(child), where);
+  child_names_.push_back(name);
 }
 
 const PropertyValue* Properties::find(const std::string& name) const {

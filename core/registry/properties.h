@@ -83,6 +83,15 @@ class Properties {
       if (child.category == category) out.emplace_back(std::dynamic_pointer_cast<T>(child.object), where);
     return out;
   }
+  // The same, each with the name the element gave it ("" for none).
+  template <class T>
+  std::vector<std::pair<std::shared_ptr<T>, std::string>> children_named(const std::string& category) const {
+    std::vector<std::pair<std::shared_ptr<T>, std::string>> out;
+    for (size_t i = 0; i < children_.size(); ++i)
+      if (children_[i].first.category == category)
+        out.emplace_back(std::dynamic_pointer_cast<T>(children_[i].first.object), child_names_[i]);
+    return out;
+  }
   // At most one nested object of `category`; null if there is none.
   template <class T>
   std::shared_ptr<T> child(const std::string& category) const {
@@ -119,6 +128,7 @@ class Properties {
   SourceLocation where_;
   std::vector<std::pair<std::string, PropertyValue>> values_;
   std::vector<std::pair<ObjectValue, SourceLocation>> children_;
+  std::vector<std::string> child_names_;                           // the name each of children_ was given, or ""
   mutable std::vector<std::pair<std::string, std::string>> read_;  // effective values, as the getters returned them
   std::vector<std::string>* warnings_ = nullptr;
   Vec3d render_origin_;

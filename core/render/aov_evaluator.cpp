@@ -16,7 +16,11 @@ const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
                                                   {"position", AovKind::Position},
                                                   {"uv", AovKind::Uv},
                                                   {"depth", AovKind::Depth},
-                                                  {"coverage", AovKind::Coverage}};
+                                                  {"coverage", AovKind::Coverage},
+                                                  {"dp_du", AovKind::DpDu},
+                                                  {"dp_dv", AovKind::DpDv},
+                                                  {"prim_index", AovKind::PrimIndex},
+                                                  {"shape_index", AovKind::ShapeIndex}};
 
 const char* suffixes(AovKind kind) {
   switch (kind) {
@@ -25,7 +29,12 @@ const char* suffixes(AovKind kind) {
     case AovKind::ShNormal:
     case AovKind::GeoNormal:
     case AovKind::Position:
+    case AovKind::DpDu:
+    case AovKind::DpDv:
       return "XYZ";
+    case AovKind::PrimIndex:
+    case AovKind::ShapeIndex:
+      return "I";
     case AovKind::Uv:
       return "UV";
     case AovKind::Depth:
@@ -50,7 +59,8 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
     const auto it = std::find_if(std::begin(kKinds), std::end(kKinds), [&](const auto& k) { return kind == k.first; });
     if (it == std::end(kKinds))
       throw std::invalid_argument("unknown kind '" + kind +
-                                  "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth, coverage)");
+                                  "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth, coverage, "
+                                  "dp_du, dp_dv, prim_index, shape_index)");
     out.push_back({item.substr(0, colon), it->second});
     start = end + 1;
   }
@@ -96,6 +106,19 @@ void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteracti
         break;
       case AovKind::Coverage:
         put({1, 0, 0}, 1);
+        break;
+      case AovKind::DpDu:
+        put(si->dpdu, 3);
+        break;
+      case AovKind::DpDv:
+        put(si->dpdv, 3);
+        break;
+      // Exact as floats up to 2^24.
+      case AovKind::PrimIndex:
+        put({float(si->prim), 0, 0}, 1);
+        break;
+      case AovKind::ShapeIndex:
+        put({float(si->shape_index), 0, 0}, 1);
         break;
     }
   }

@@ -10,7 +10,7 @@
 
 namespace caustica {
 
-enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth, Coverage };
+enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth, Coverage, DpDu, DpDv, PrimIndex, ShapeIndex };
 
 struct AovSpec {
   std::string name;
@@ -18,7 +18,8 @@ struct AovSpec {
 };
 
 // Parses "name:kind,name:kind" (kinds: albedo, sh_normal, geo_normal,
-// position, uv, depth, coverage); throws std::invalid_argument naming the bad item.
+// position, uv, depth, coverage, dp_du, dp_dv, prim_index, shape_index);
+// throws std::invalid_argument naming the bad item.
 std::vector<AovSpec> parse_aov_list(const std::string& text);
 
 // Values at the first surface a ray meets: noise-free inputs for denoisers
@@ -27,9 +28,9 @@ class AovEvaluator {
  public:
   explicit AovEvaluator(std::vector<AovSpec> aovs) : aovs_(std::move(aovs)) {}
 
-  // Channel names: name.R/G/B, name.X/Y/Z, name.U/V, name.T (depth) or
-  // name.A (coverage: 1 where the ray meets a surface, an alpha channel);
-  // without a name, only the suffix ("A").
+  // Channel names: name.R/G/B, name.X/Y/Z, name.U/V, name.T (depth),
+  // name.A (coverage: 1 where the ray meets a surface, an alpha channel) or
+  // name.I (an index); without a name, only the suffix ("A").
   std::vector<std::string> channels() const;
   // The values at `hit`, the first surface `ray` meets (none: zeros).
   void evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& hit, std::span<float> out) const;

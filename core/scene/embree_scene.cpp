@@ -52,6 +52,8 @@ std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
   const unsigned top = rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayhit.hit.instID[0] : rayhit.hit.geomID;
   SurfaceInteraction si = by_geom_id_[top]->interaction(ray, hit);
   si.time = ray.time;
+  si.prim = hit.prim;
+  si.shape_index = top;
   return si;
 }
 

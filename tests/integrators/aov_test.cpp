@@ -1,7 +1,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "tests/support/test_scenes.h"
 
@@ -59,6 +62,91 @@ TEST(AovIntegrator, UnknownKindIsAnError) {
   EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<integrator type='aov'>\n"
                                "<string name='aovs' value='a:albedo,b:curvature'/></integrator></scene>"),
               testing::HasSubstr("test.xml:3: parameter 'aovs' of integrator 'aov': unknown kind 'curvature'"));
+}
+
+// dp_du and dp_dv against the positions and (u, v) of neighbouring pixels
+// on one plane (an affine mapping: p(x+1) - p(x) = dp_du du + dp_dv dv
+// exactly); prim_index by which of a quad's two triangles a corner pixel
+// meets; shape_index by the shape's place in the file.
+TEST(AovIntegrator, TangentsAndIndices) {
+  const auto mesh = std::filesystem::temp_directory_path() / "caustica_aov_quad.obj";
+  // Face 0 is the lower-right half of the quad, face 1 the upper-left.
+  std::ofstream(mesh) << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n";
+  const std::string camera =
+      "<sensor type='perspective'><float name='fov' value='30'/><transform name='to_world'><lookat origin='0, 0, 3' "
+      "target='0, 0, 0'/></transform><film type='hdrfilm'><integer name='width' value='5'/><integer name='height' "
+      "value='5'/><rfilter type='box'/></film><sampler type='independent'><integer name='sample_count' "
+      "value='1'/></sampler></sensor>";
+  const auto plane = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='p:position,t:uv,du:dp_du,"
+      "dv:dp_dv'/></integrator>" +
+      camera +
+      "<shape type='rectangle'><transform name='to_world'><scale x='2' y='1.5'/><rotate z='1' angle='20'/>"
+      "</transform></shape></scene>");
+  ASSERT_EQ(plane.integrator->channels().size(), 11u);
+  EXPECT_EQ(plane.integrator->channels()[5], "du.X");
+  const auto img = test::render_scene(plane, 1).resolve();
+  const auto at = [&](int x, int y) { return &img[(y * 5 + x) * 11]; };
+  for (const auto& [x0, y0, x1, y1] : {std::array{2, 2, 3, 2}, std::array{2, 2, 2, 1}, std::array{1, 3, 3, 1}}) {
+    const float *a = at(x0, y0), *b = at(x1, y1);
+    const float du = b[3] - a[3], dv = b[4] - a[4];
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(b[c] - a[c], a[5 + c] * du + a[8 + c] * dv, 1e-4f) << x1 << " " << y1 << " axis " << c;
+  }
+  const auto quad = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='i:prim_index,s:shape_index'/>"
+      "</integrator>" +
+      camera +
+      "<shape type='sphere'><point name='center' x='0' y='0' z='-50'/></shape><shape type='obj'>"
+      "<string name='filename' value='" +
+      mesh.string() + "'/></shape></scene>");
+  const auto indices = test::render_scene(quad, 1).resolve();
+  EXPECT_EQ(indices[(4 * 5 + 4) * 2], 0);  // the lower-right corner: face 0
+  EXPECT_EQ(indices[(0 * 5 + 0) * 2], 1);  // the upper-left corner: face 1
+  for (int p = 0; p < 25; ++p) EXPECT_EQ(indices[p * 2 + 1], 1) << p;
+}
+
+// A nested path tracer writes its image, prefixed by its name, before the
+// layers: the same image, bit for bit, as path alone with the same seed
+// (the layers draw no numbers).
+TEST(AovIntegrator, NestedIntegratorsRenderAlong) {
+  const std::string rest =
+      "<sensor type='perspective'><transform name='to_world'><lookat origin='0, 1, 4' target='0, 0, 0'/>"
+      "</transform><film type='hdrfilm'><integer name='width' value='6'/><integer name='height' value='4'/>"
+      "</film></sensor><shape type='sphere'/><shape type='rectangle'><transform name='to_world'><scale value='3'/>"
+      "<rotate x='1' angle='-90'/><translate y='-1'/></transform></shape><emitter type='constant'/></scene>";
+  const auto along = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='d:depth'/>"
+      "<integrator type='path' name='my_image'><integer name='max_depth' value='3'/></integrator></integrator>" +
+      rest);
+  EXPECT_THAT(along.integrator->channels(), testing::ElementsAre("my_image.R", "my_image.G", "my_image.B", "d.T"));
+  const auto alone = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='path'><integer name='max_depth' value='3'/></integrator>" + rest);
+  const auto layers = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='d:depth'/></integrator>" + rest);
+  const auto a = test::render_scene(along, 8, 5).resolve(), b = test::render_scene(alone, 8, 5).resolve(),
+             d = test::render_scene(layers, 8, 5).resolve();
+  ASSERT_EQ(a.size() / 4, b.size() / 3);
+  double sum = 0;
+  for (size_t p = 0; p < b.size() / 3; ++p) {
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a[p * 4 + c], b[p * 3 + c]) << p;
+    EXPECT_EQ(a[p * 4 + 3], d[p]) << p;
+    sum += b[p * 3];
+  }
+  EXPECT_GT(sum, 0);
+}
+
+TEST(AovIntegrator, NestedIntegratorsThatCannotBeAreRefused) {
+  const auto error = [](const std::string& nested) {
+    return test::load_error("<scene version='3.0.0'>\n<integrator type='aov'>\n" + nested + "</integrator></scene>");
+  };
+  EXPECT_THAT(error("<integrator type='bdpt' name='b'/>"),
+              testing::HasSubstr("test.xml:2: a nested integrator of aov must estimate pixel by pixel from the camera "
+                                 "(path, volpath, direct, guided_path, photon or radiosity), which 'bdpt' does not"));
+  EXPECT_THAT(error("<integrator type='path'/>"),
+              testing::HasSubstr("test.xml:2: a nested integrator of aov needs a name (name=\"...\")"));
+  EXPECT_THAT(error("<integrator type='path' name='a'/><integrator type='direct' name='a'/>"),
+              testing::HasSubstr("two nested integrators of aov are named 'a'"));
 }
 
 }  // namespace

@@ -66,7 +66,6 @@ TEST(CompatCorpus, EveryFileRenders) {
 // (scenes/compat/README.md lists why).
 TEST(CompatCorpus, WhatIsStillRefusedSaysWhat) {
   const std::map<std::string, std::string> expected = {
-      {"aov-cbox-nested-integrator.xml", "integrator 'aov' does not take a nested <integrator>"},
       {"m06-bumpmap-scaletex.xml", "unknown texture type 'scale'"},
       {"m06-phong-direct-energy.xml", "it must be at most 1 to conserve energy"}};
   const auto files = corpus_files(kCorpus / "refused");
