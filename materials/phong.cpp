@@ -10,7 +10,9 @@
 // so kd + ks must not exceed 1 in any channel.
 //
 // kd + ks is checked against 1 on the textures' means (exactly, for
-// constant values). Sampling picks the glossy lobe with probability
+// constant values); above 1 both are scaled down by the largest sum, with a
+// warning, as Mitsuba 0.x does (or, with ensure_energy_conservation false,
+// the material is refused). Sampling picks the glossy lobe with probability
 // mean(ks) / (mean(kd) + mean(ks)) at the shading point, then samples cos^n
 // around the mirror direction or the cosine-weighted hemisphere; pdf() is
 // the mixture. One-sided: nothing is reflected from below the normal.
@@ -21,6 +23,7 @@
 //       <float name="exponent" value="80"/>
 //   </bsdf>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/bsdf/bsdf.h"
@@ -28,6 +31,7 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
+#include "core/texture/scaled_texture.h"
 #include "core/texture/texture_parameter.h"
 
 namespace caustica {
@@ -45,11 +49,18 @@ class PhongBsdf final : public Bsdf {
     if (!(exponent_ >= 0) || !std::isfinite(exponent_))
       throw props.error("exponent", "must be a finite number of 0 or more");
     const Color sum = kd_->mean() + ks_->mean();
-    for (int c = 0; c < 3; ++c)
-      if (sum[c] > 1)
-        throw props.error("specular_reflectance", "diffuse_reflectance + specular_reflectance is " +
-                                                      std::to_string(sum[c]) + " in channel " + std::to_string(c) +
-                                                      "; it must be at most 1 to conserve energy");
+    const float most = std::max({sum.r, sum.g, sum.b});
+    if (!(most > 1)) return;
+    const int c = sum.r == most ? 0 : sum.g == most ? 1 : 2;
+    const std::string what =
+        "diffuse_reflectance + specular_reflectance is " + std::to_string(most) + " in channel " + std::to_string(c);
+    if (!props.get_bool("ensure_energy_conservation"))
+      throw props.error("specular_reflectance", what + "; it must be at most 1 to conserve energy");
+    // As Mitsuba 0.x: both scaled down, with a warning.
+    kd_ = std::make_shared<ScaledTexture>(kd_, 1 / most);
+    ks_ = std::make_shared<ScaledTexture>(ks_, 1 / most);
+    props.warn("specular_reflectance", what + "; both are scaled by " + std::to_string(1 / most) +
+                                           " to conserve energy (ensure_energy_conservation)");
   }
 
   uint32_t lobes() const override { return kDiffuseReflection | kGlossyReflection; }
@@ -122,7 +133,9 @@ class PhongBsdf final : public Bsdf {
 CAUSTICA_REGISTER_PLUGIN(PhongBsdf, "bsdf", "phong",
                          {{"diffuse_reflectance", ParamType::Texture, "0.5", "diffuse reflectance kd"},
                           {"specular_reflectance", ParamType::Texture, "0.2", "glossy reflectance ks"},
-                          {"exponent", ParamType::Float, "30", "Phong exponent n, the lobe's sharpness (0 or more)"}},
+                          {"exponent", ParamType::Float, "30", "Phong exponent n, the lobe's sharpness (0 or more)"},
+                          {"ensure_energy_conservation", ParamType::Boolean, "true",
+                           "scale both reflectances down, with a warning, where they sum above 1 (else refuse)"}},
                          {});
 
 }  // namespace caustica

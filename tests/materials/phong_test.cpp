@@ -146,15 +146,35 @@ TEST(PhongBsdf, HardCasesStayFiniteAndHugeExponentsKeepTheirEnergy) {
   EXPECT_EQ(black->pdf({}, direction(0.5f), direction(0.7f)), 0.0f);
 }
 
-TEST(PhongBsdf, RejectsEnergyGain) {
-  const std::string scene =
-      "<scene version='3.0.0'>\n<shape type='rectangle'>\n<bsdf type='phong'>\n"
-      "<rgb name='diffuse_reflectance' value='0.5, 0.5, 0.9'/>\n<rgb name='specular_reflectance' value='0.2'/>\n"
-      "</bsdf></shape></scene>";
-  const std::string message = test::load_error(scene, "bad.xml");
-  EXPECT_THAT(message, HasSubstr("specular_reflectance"));
-  EXPECT_THAT(message, HasSubstr("at most 1"));
-  EXPECT_THAT(message, HasSubstr("bad.xml"));
+// Reflectances summing above 1 are scaled down by the largest sum, with a
+// warning, as Mitsuba 0.x does; refused where ensure_energy_conservation is
+// false.
+TEST(PhongBsdf, EnergyGainIsScaledAwayOrRefused) {
+  const std::string gaining =
+      "<rgb name='diffuse_reflectance' value='0.5, 0.5, 0.9'/>\n<rgb name='specular_reflectance' value='0.2'/>\n";
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'>\n<shape type='rectangle'>\n<bsdf type='phong'>\n" + gaining + "</bsdf></shape></scene>",
+      "old.xml");
+  EXPECT_THAT(scene.warnings,
+              testing::Contains(HasSubstr("old.xml:5: parameter 'specular_reflectance' of bsdf 'phong': "
+                                          "diffuse_reflectance + specular_reflectance is 1.100000 in channel 2; "
+                                          "both are scaled by 0.909091")));
+  // f = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha), both divided by 1.1.
+  const Bsdf& bsdf = *scene->shapes()[0]->bsdf();
+  const Vec3 wo = direction(0.3f, 0.0f), wi = direction(0.4f, kPi);
+  const double cos_alpha = dot(wi, Vec3(-wo.x, -wo.y, wo.z));
+  for (int c = 0; c < 3; ++c) {
+    const double kd = c == 2 ? 0.9 : 0.5;
+    const double expected = (kd / kPi + 0.2 * 32 / (2 * kPi) * std::pow(cos_alpha, 30)) / 1.1;
+    EXPECT_NEAR(bsdf.eval({}, wo, wi)[c], expected, 1e-5 * expected) << c;
+  }
+  const std::string message =
+      test::load_error("<scene version='3.0.0'>\n<shape type='rectangle'>\n<bsdf type='phong'>\n" + gaining +
+                           "<boolean name='ensure_energy_conservation' value='false'/></bsdf></shape></scene>",
+                       "bad.xml");
+  EXPECT_THAT(message, HasSubstr("bad.xml:5: parameter 'specular_reflectance' of bsdf 'phong': diffuse_reflectance + "
+                                 "specular_reflectance is 1.100000 in channel 2; it must be at most 1 to conserve "
+                                 "energy"));
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='rectangle'><bsdf type='phong'>"
                                "<float name='exponent' value='-1'/></bsdf></shape></scene>"),
               HasSubstr("exponent"));

@@ -248,5 +248,22 @@ TEST(CheckerboardTexture, ColoursAndTransformAsDiffuseReflectance) {
   EXPECT_LT(c.max_f_error, 1e-6);
 }
 
+// Mitsuba 0.x's scale texture: the nested texture times the factor, its
+// checks where they were.
+TEST(ScaleTexture, ScalesTheNestedTexture) {
+  const TextureProbe scaled(
+      "<texture type='scale' name='reflectance'><float name='scale' value='0.4'/><texture type='checkerboard'>"
+      "<rgb name='color0' value='0.5, 0.25, 1'/><rgb name='color1' value='0.1'/></texture></texture>");
+  expect_color_near(scaled(0.25f, 0.25f), Color(0.2f, 0.1f, 0.4f), 1e-6f);
+  expect_color_near(scaled(0.75f, 0.25f), Color(0.04f), 1e-6f);
+  expect_color_near(scaled(0.75f, 0.75f), Color(0.2f, 0.1f, 0.4f), 1e-6f);
+  EXPECT_THAT(
+      test::load_error("<scene version='3.0.0'>\n<texture type='scale'>\n<float name='scale' value='-1'/>"
+                       "<texture type='checkerboard'/></texture></scene>"),
+      testing::HasSubstr("test.xml:3: parameter 'scale' of texture 'scale': must be a finite number of 0 or more"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'>\n<texture type='scale'/></scene>"),
+              testing::HasSubstr("test.xml:2: a scale texture needs a nested <texture> to scale"));
+}
+
 }  // namespace
 }  // namespace caustica
