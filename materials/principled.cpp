@@ -72,9 +72,9 @@ class PrincipledBsdf final : public Bsdf {
         clearcoat_(read_fraction(props, "clearcoat")),
         clearcoat_gloss_(read_fraction(props, "clearcoat_gloss")),
         eta_(read_eta(props)),
-        rate_diffuse_(read_rate(props, "diffuse_reflectance_sampling_rate")),
-        rate_specular_(read_rate(props, "main_specular_sampling_rate")),
-        rate_clearcoat_(read_rate(props, "clearcoat_sampling_rate")),
+        rate_diffuse_(read_sampling_rate(props, "diffuse_reflectance_sampling_rate")),
+        rate_specular_(read_sampling_rate(props, "main_specular_sampling_rate")),
+        rate_clearcoat_(read_sampling_rate(props, "clearcoat_sampling_rate")),
         transmits_(spec_trans_->range().highest > 0 && metallic_->range().lowest < 1) {}
 
   uint32_t lobes() const override {
@@ -177,20 +177,7 @@ class PrincipledBsdf final : public Bsdf {
     return 2 / (1 - s) - 1;
   }
 
-  static float read_rate(const Properties& props, const std::string& name) {
-    const float rate = props.get_float(name);
-    if (!(rate > 0) || !std::isfinite(rate))
-      throw props.error(name, "must be positive (a lobe never sampled could not carry a path on)");
-    return rate;
-  }
-
   static Color sqrt_color(Color c) { return {std::sqrt(c.r), std::sqrt(c.g), std::sqrt(c.b)}; }
-
-  // base / lum(base), or white where the base is black.
-  static Color tint_of(Color base) {
-    const float lum = base.luminance();
-    return lum > 0 ? base / lum : Color(1);
-  }
 
   Inputs at(const BsdfContext& ctx) const {
     const Vec2 uv = ctx.uv;

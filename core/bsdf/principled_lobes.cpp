@@ -4,8 +4,21 @@
 #include <cmath>
 
 #include "core/math/constants.h"
+#include "core/registry/properties.h"
 
 namespace caustica {
+
+Color tint_of(Color base) {
+  const float lum = base.luminance();
+  return lum > 0 ? base / lum : Color(1);
+}
+
+float read_sampling_rate(const Properties& props, const std::string& name) {
+  const float rate = props.get_float(name);
+  if (!(rate > 0) || !std::isfinite(rate))
+    throw props.error(name, "must be positive (a lobe never sampled could not carry a path on)");
+  return rate;
+}
 
 float schlick_weight(float cos) {
   const float m = std::clamp(1 - cos, 0.0f, 1.0f);

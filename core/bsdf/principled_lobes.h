@@ -1,13 +1,25 @@
 #pragma once
 
+#include <string>
+
 #include "core/math/color.h"
 #include "core/math/vec.h"
 
 namespace caustica {
 
+class Properties;
+
 // The pieces of Burley's principled material ("Physically Based Shading at
 // Disney", SIGGRAPH 2012 course; "Extending the Disney BRDF to a BSDF with
 // Integrated Subsurface Scattering", 2015) that no other material uses.
+
+// base / lum(base), the hue of a colour at unit luminance; white where the
+// colour is black.
+Color tint_of(Color base);
+
+// A lobe's sampling rate, checked positive (a lobe never sampled could not
+// carry a path on).
+float read_sampling_rate(const Properties& props, const std::string& name);
 
 // (1 - cos)^5, the weight of Schlick's approximation, for cos clamped to [0, 1].
 float schlick_weight(float cos);

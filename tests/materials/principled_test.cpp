@@ -7,6 +7,7 @@
 
 #include "core/math/constants.h"
 #include "tests/support/bsdf_checks.h"
+#include "tests/support/burley_oracle.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -68,57 +69,8 @@ Material half_glass() {
   return m;
 }
 
-// ---------------------------------------------------------------------------
-// The published model, evaluated independently of the plugin: in the form of
-// Burley's 2012 notes (the diffuse lobe as (1 + (F_D90 - 1) F_L)(1 + (F_D90 - 1)
-// F_V), masking in its "visibility" form G1 / (2 cos), which carries the
-// 1 / (4 cos_l cos_v) of the microfacet model), in double precision, angles
-// through spherical coordinates.
-
-double schlick(double cos) { return std::pow(std::clamp(1 - cos, 0.0, 1.0), 5); }
-
-// Exact unpolarised Fresnel reflectance for light meeting a facet at cos_i
-// from the side of index n1 into n2.
-double fresnel(double cos_i, double n1, double n2) {
-  const double sin_t = n1 / n2 * std::sqrt(std::max(0.0, 1 - cos_i * cos_i));
-  if (sin_t >= 1) return 1;
-  const double cos_t = std::sqrt(1 - sin_t * sin_t);
-  const double s = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-  const double p = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-  return (s * s + p * p) / 2;
-}
-
-struct Dir {
-  double x, y, z;
-};
-double dot3(Dir a, Dir b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Dir unit(Dir a) {
-  const double l = std::sqrt(dot3(a, a));
-  return {a.x / l, a.y / l, a.z / l};
-}
-
-struct Alphas {
-  double x, y;
-};
-Alphas alphas(const Material& m) {
-  const double aspect = std::sqrt(1 - 0.9 * m.anisotropic);
-  return {std::max(0.001, m.roughness * m.roughness / aspect), std::max(0.001, m.roughness * m.roughness * aspect)};
-}
-
-// Anisotropic GGX by the half vector's angles.
-double ggx_D(Dir h, Alphas a) {
-  const double theta = std::acos(h.z), phi = std::atan2(h.y, h.x);
-  const double s2 = std::sin(theta) * std::sin(theta), c2 = std::cos(theta) * std::cos(theta);
-  const double k =
-      s2 * (std::cos(phi) * std::cos(phi) / (a.x * a.x) + std::sin(phi) * std::sin(phi) / (a.y * a.y)) + c2;
-  return 1 / (kPi * a.x * a.y * k * k);
-}
-
-// Smith's masking G1 / (2 |cos|) for anisotropic GGX (Heitz 2014, Burley's form).
-double ggx_visibility(Dir v, Alphas a) {
-  const double c = std::abs(v.z);
-  return 1 / (c + std::sqrt(v.x * a.x * v.x * a.x + v.y * a.y * v.y * a.y + c * c));
-}
+// The published model (tests/support/burley_oracle.h), wo above the surface.
+using namespace test::burley;
 
 double gtr1_D(double cos_h, double alpha) {
   const double a2 = alpha * alpha;
@@ -135,16 +87,11 @@ std::array<double, 3> published(const Material& m, Dir v, Dir l) {
   std::array<double, 3> out{};
   const double brdf = (1 - m.metallic) * (1 - m.spec_trans), bsdf = (1 - m.metallic) * m.spec_trans;
   const double lum = 0.2126 * m.base[0] + 0.7152 * m.base[1] + 0.0722 * m.base[2];
-  const Alphas a = alphas(m);
+  const Alphas a = alphas(m.roughness, m.anisotropic);
   if (l.z > 0) {
     const Dir h = unit({v.x + l.x, v.y + l.y, v.z + l.z});
-    const double cos_d = dot3(l, h), fl = schlick(l.z), fv = schlick(v.z);
-    const double fd90 = 0.5 + 2 * m.roughness * cos_d * cos_d;
-    const double fd = (1 + (fd90 - 1) * fl) * (1 + (fd90 - 1) * fv);
-    const double fss90 = m.roughness * cos_d * cos_d;
-    const double fss = (1 + (fss90 - 1) * fl) * (1 + (fss90 - 1) * fv);
-    const double ss = 1.25 * (fss * (1 / (l.z + v.z) - 0.5) + 0.5);
-    const double diffuse = (fd + m.flatness * (ss - fd)) / kPi;
+    const double cos_d = dot3(l, h);
+    const double lambert = diffuse(l.z, v.z, cos_d, m.roughness, m.flatness);
     const double fh = schlick(cos_d);
     const double F_d = fresnel(dot3(v, h), 1, m.eta);
     const double r0 = (m.eta - 1) * (m.eta - 1) / ((m.eta + 1) * (m.eta + 1));
@@ -159,7 +106,7 @@ std::array<double, 3> published(const Material& m, Dir v, Dir l) {
       const double F =
           (1 - m.metallic) * (1 - m.spec_tint) * F_d + m.metallic * metal + (1 - m.metallic) * m.spec_tint * tinted;
       const double sheen = m.sheen * (1 + m.sheen_tint * (tint - 1)) * fh;
-      out[c] = brdf * (m.base[c] * diffuse + sheen) + F * D * vis + coat;
+      out[c] = brdf * (m.base[c] * lambert + sheen) + F * D * vis + coat;
     }
     return out;
   }
