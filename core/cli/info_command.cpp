@@ -52,6 +52,10 @@ int InfoCommand::run() const {
       std::printf("  %s: cannot render it (no participating media or null surfaces yet)\n", name.c_str());
       continue;
     }
+    if (scene->features().light_path_only_lights > 0 && !integrator->traces_all_light_from_lights()) {
+      std::printf("  %s: cannot render it (its directionalarea light is seen by light tracing only)\n", name.c_str());
+      continue;
+    }
     const std::string plan = integrator->plan(*scene);
     if (!plan.empty()) std::printf("  %s\n", plan.c_str());
   }

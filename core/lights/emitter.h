@@ -87,6 +87,9 @@ class Emitter : public Plugin {
 
   virtual bool is_delta() const { return false; }
   virtual bool is_infinite() const { return false; }
+  // Whether only paths traced from the lights can carry its light (it emits
+  // from each point in one direction, which nothing else finds).
+  virtual bool seen_by_light_paths_only() const { return false; }
   // Whether the light moves over the shutter (MovingEmitter).
   virtual bool moves() const { return false; }
   // An environment a ray leaving the scene can meet: infinitely far and

@@ -30,6 +30,12 @@ void Integrator::check_scene(const Scene& scene) const {
     throw std::invalid_argument(
         "integrator '" + plugin_name() + "' does not render moving shapes or cameras yet, which " + scene.source() +
         " has; render it with " + integrators_that([](const Integrator& i) { return i.renders_motion(); }));
+  if (f.light_path_only_lights > 0 && !traces_all_light_from_lights())
+    throw std::invalid_argument(
+        "integrator '" + plugin_name() + "' cannot see the directionalarea light of " + scene.source() +
+        " (each of its points emits along its normal only, a direction no path from the camera or a surface "
+        "finds); render it with " +
+        integrators_that([](const Integrator& i) { return i.traces_all_light_from_lights(); }));
   if (!f.spectral) return;
   const std::string spectral = "spectral transport (" + f.spectral_reason + ")";
   if (!renders_spectral())

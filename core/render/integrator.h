@@ -91,6 +91,9 @@ class Integrator : public Plugin {
   virtual bool renders_motion() const { return false; }
   // Whether it renders in spectral mode (paths carrying wavelengths).
   virtual bool renders_spectral() const { return false; }
+  // Whether it traces all of its light from the lights, so that it sees
+  // lights only light paths can (directionalarea).
+  virtual bool traces_all_light_from_lights() const { return false; }
   // Throws std::invalid_argument, saying why, if it cannot render `scene`
   // (a scene with media or moving shapes for an integrator that does not
   // render them, or a

@@ -147,6 +147,7 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
     f.directional_lights += e->is_delta() && e->is_infinite();
     f.environment_lights += e->is_environment();
     f.moving_lights += e->moves();
+    f.light_path_only_lights += e->seen_by_light_paths_only();
   }
   bool receiver = false;
   for (const auto& s : scene.shapes()) {

@@ -17,6 +17,8 @@ class Scene;
 struct SceneFeatures {
   uint32_t lobes = 0;  // BsdfLobe flags of every surface together
   int area_lights = 0, point_lights = 0, directional_lights = 0, environment_lights = 0;
+  // Lights only paths traced from the lights can see (directionalarea).
+  int light_path_only_lights = 0;
   bool textures = false;
   std::string camera;   // the sensor's plugin name
   bool pinhole = true;  // no lens to sample

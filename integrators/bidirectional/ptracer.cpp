@@ -51,6 +51,7 @@ class ParticleTracer final : public LightPathIntegrator {
   bool renders_media() const override { return true; }
   bool renders_spectral() const override { return true; }
   bool renders_motion() const override { return true; }
+  bool traces_all_light_from_lights() const override { return true; }
 
   std::string plan(const Scene& scene) const override {
     return std::string("ptracer: light paths joined to the camera") +
