@@ -242,10 +242,7 @@ class PrincipledBsdf final : public Bsdf {
       }
       e.f = specular_fresnel(p, wo_m, F_d) * shape;
       if (p.brdf > 0) {
-        e.f += p.base * (p.brdf * kInvPi * burley_diffuse(cos_o, cos_i, wi_m, p.roughness, p.flatness));
-        if (p.sheen > 0)
-          e.f += (Color(1) * (1 - p.sheen_tint) + tint_of(p.base) * p.sheen_tint) *
-                 (p.brdf * p.sheen * schlick_weight(wi_m));
+        e.f += diffuse_with_sheen(p.base, p.brdf, cos_o, cos_i, wi_m, p.roughness, p.flatness, p.sheen, p.sheen_tint);
         e.pdf += c.diffuse * cosine_hemisphere_pdf(cos_i);
       }
       if (p.clearcoat > 0) {

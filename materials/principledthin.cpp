@@ -191,12 +191,9 @@ class PrincipledThinBsdf final : public Bsdf {
       }
     }
     if (i.z > 0) {
-      if (p.w_diffuse > 0) {
-        e.f += p.base * (p.w_diffuse * kInvPi * burley_diffuse(cos_o, cos_i, r_m, p.roughness, p.flatness));
-        if (p.sheen > 0)
-          e.f += (Color(1) * (1 - p.sheen_tint) + tint_of(p.base) * p.sheen_tint) *
-                 (p.w_diffuse * p.sheen * schlick_weight(r_m));
-      }
+      if (p.w_diffuse > 0)
+        e.f +=
+            diffuse_with_sheen(p.base, p.w_diffuse, cos_o, cos_i, r_m, p.roughness, p.flatness, p.sheen, p.sheen_tint);
       e.pdf += p.diffuse * cosine_hemisphere_pdf(cos_i);
     } else {
       e.f += p.base * (p.w_through * kInvPi);

@@ -55,6 +55,13 @@ float burley_diffuse(float cos_o, float cos_i, float cos_d, float roughness, flo
   return (1 - flatness) * (lambert + retro) + flatness * subsurface;
 }
 
+Color diffuse_with_sheen(Color base, float weight, float cos_o, float cos_i, float cos_d, float roughness,
+                         float flatness, float sheen, float sheen_tint) {
+  Color f = base * (kInvPi * burley_diffuse(cos_o, cos_i, cos_d, roughness, flatness));
+  if (sheen > 0) f += (Color(1) * (1 - sheen_tint) + tint_of(base) * sheen_tint) * (sheen * schlick_weight(cos_d));
+  return f * weight;
+}
+
 float Gtr1::D(Vec3 m) const {
   if (m.z <= 0) return 0;
   const float a2 = alpha * alpha;

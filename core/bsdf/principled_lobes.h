@@ -40,6 +40,11 @@ float normal_reflectance(float eta);
 // of either with their half vector.
 float burley_diffuse(float cos_o, float cos_i, float cos_d, float roughness, float flatness);
 
+// The diffuse base with its sheen, both scaled by `weight`:
+//   weight (base / pi burley_diffuse(...) + sheen lerp(1, tint_of(base), sheen_tint) (1 - cos_d)^5).
+Color diffuse_with_sheen(Color base, float weight, float cos_o, float cos_i, float cos_d, float roughness,
+                         float flatness, float sheen, float sheen_tint);
+
 // The clearcoat's normal distribution, Burley's generalised Trowbridge-Reitz
 // with exponent 1 (isotropic): D(m) = (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2)).
 struct Gtr1 {

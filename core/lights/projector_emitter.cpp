@@ -26,6 +26,7 @@
 
 #include "core/camera/perspective_projection.h"
 #include "core/lights/emitter.h"
+#include "core/lights/point_light_li.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/texture/texture.h"
@@ -51,13 +52,7 @@ class ProjectorEmitter final : public Emitter {
   }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
-    Vec3 wi = position_ - ref.p;
-    const float dist2 = squared_length(wi);
-    if (dist2 == 0) return std::nullopt;
-    wi = wi / std::sqrt(dist2);
-    const Color I = emitted(-wi);
-    if (I.is_black()) return std::nullopt;
-    return LiSample{wi, I / dist2, 1, true, position_, {}, {}, false};
+    return point_light_Li(position_, ref, [&](Vec3 d) { return emitted(d); });
   }
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }

@@ -15,6 +15,7 @@
 
 #include "core/lights/emission_parameter.h"
 #include "core/lights/emitter.h"
+#include "core/lights/point_light_li.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/warp.h"
@@ -46,13 +47,7 @@ class SpotEmitter final : public Emitter {
   }
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2) const override {
-    Vec3 wi = position_ - ref.p;
-    const float dist2 = squared_length(wi);
-    if (dist2 == 0) return std::nullopt;
-    wi = wi / std::sqrt(dist2);
-    const Color I = emitted(-wi);
-    if (I.is_black()) return std::nullopt;
-    return LiSample{wi, I / dist2, 1, true, position_, {}, {}, false};
+    return point_light_Li(position_, ref, [&](Vec3 d) { return emitted(d); });
   }
 
   float pdf_Li(const ReferencePoint&, Vec3, const SurfaceInteraction&) const override { return 0; }
