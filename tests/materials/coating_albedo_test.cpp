@@ -1,13 +1,17 @@
 // The rough coating's albedo table (roughplastic's E): near alpha 0 it is
-// the smooth interface's Fresnel reflectance, written out here; across a
-// roughness range it interpolates what a table made for the one roughness
-// gives, and at the range's ends it is that table exactly.
+// the smooth interface's Fresnel reflectance, written out here; at any
+// roughness it is the reflected albedo integrated over microfacet normals
+// apart from core/bsdf; across a roughness range it interpolates what a
+// table made for the one roughness gives, and at the range's ends it is
+// that table exactly.
 
 #include "core/bsdf/coating_albedo.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "tests/support/microfacet_oracle.h"
 
 namespace caustica {
 namespace {
@@ -47,6 +51,34 @@ TEST(CoatingAlbedo, RangeInterpolatesSingleTables) {
   // Outside the range, the nearest end.
   EXPECT_EQ(range(0.9f, 0.5f), range(0.6f, 0.5f));
   EXPECT_EQ(range(0.0f, 0.5f), range(0.05f, 0.5f));
+}
+
+// The table against the albedo integrated over microfacet normals apart
+// from core/bsdf (tests/support/microfacet_oracle): the reflected share of a
+// rough dielectric interface, which is what E is, at roughness from near
+// smooth to very rough and at every angle down to near grazing; and its
+// cosine-weighted mean by the midpoint rule over the same oracle.
+TEST(CoatingAlbedo, MatchesTheAlbedoIntegratedOverNormals) {
+  for (const auto type : {MicrofacetDistribution::Type::Beckmann, MicrofacetDistribution::Type::GGX})
+    for (const float alpha : {0.05f, 0.3f, 0.8f}) {
+      const CoatingAlbedo e(type, alpha, alpha, kEta);
+      const test::MicrofacetModel model{type == MicrofacetDistribution::Type::GGX, alpha, alpha};
+      const auto oracle = [&](double mu, int n) {
+        const Vec3 wo(float(std::sqrt(1 - mu * mu)), 0, float(mu));
+        return test::microfacet_albedo(model, {true, kEta}, wo, n).reflected;
+      };
+      for (const float mu : {1.0f, 0.7f, 0.4f, 0.15f, 0.05f}) {
+        const double fine = oracle(mu, 300), coarse = oracle(mu, 150);
+        EXPECT_NEAR(e(alpha, mu), fine, 2e-3 + std::abs(fine - coarse)) << alpha << " mu " << mu;
+      }
+      double mean = 0;
+      constexpr int kSteps = 64;
+      for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;
+        mean += 2 * oracle(mu, 100) * mu / kSteps;
+      }
+      EXPECT_NEAR(e.mean(alpha), mean, 3e-3) << alpha;
+    }
 }
 
 }  // namespace
