@@ -7,30 +7,17 @@
 //       <emitter type="area"><rgb name="radiance" value="18, 14, 6.7"/></emitter>
 //   </shape>
 
-#include "core/lights/emission_parameter.h"
-#include "core/lights/emitter.h"
+#include "core/lights/shape_emitter.h"
 #include "core/math/constants.h"
-#include "core/registry/properties.h"
 #include "core/sampling/warp.h"
 #include "core/shapes/shape.h"
-#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
 
-class AreaEmitter final : public Emitter {
+class AreaEmitter final : public ShapeEmitter {
  public:
-  explicit AreaEmitter(const Properties& props)
-      : radiance_(read_nonnegative_texture(props, "radiance")), where_(props.where()) {
-    set_measured_emission(props.spectrum("radiance"));
-  }
-
-  void attach_shape(const Shape* shape) override {
-    if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");
-    shape_ = shape;
-  }
-
-  bool is_area() const override { return true; }
+  using ShapeEmitter::ShapeEmitter;
 
   std::optional<LiSample> sample_Li(const ReferencePoint& ref, Vec2 u) const override {
     const PositionSample ps = shape_->sample_seen_from(ref.p, u);
@@ -74,11 +61,6 @@ class AreaEmitter final : public Emitter {
   // stands for its mean over the surface (light selection needs only a
   // positive weight for each light, not the exact power).
   Color power() const override { return radiance_->mean() * (kPi * shape_->area()); }
-
- private:
-  std::shared_ptr<Texture> radiance_;
-  SourceLocation where_;
-  const Shape* shape_ = nullptr;
 };
 
 }  // namespace

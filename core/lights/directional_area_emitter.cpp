@@ -15,26 +15,16 @@
 //   </shape>
 
 #include "core/geometry/offset.h"
-#include "core/lights/emitter.h"
-#include "core/registry/properties.h"
+#include "core/lights/shape_emitter.h"
 #include "core/shapes/shape.h"
-#include "core/texture/texture_parameter.h"
 
 namespace caustica {
 namespace {
 
-class DirectionalAreaEmitter final : public Emitter {
+class DirectionalAreaEmitter final : public ShapeEmitter {
  public:
-  explicit DirectionalAreaEmitter(const Properties& props)
-      : radiance_(read_nonnegative_texture(props, "radiance")), where_(props.where()) {
-    set_measured_emission(props.spectrum("radiance"));
-  }
+  using ShapeEmitter::ShapeEmitter;
 
-  void attach_shape(const Shape* shape) override {
-    if (shape_) throw SceneError(where_, "an area emitter can belong to one shape only");
-    shape_ = shape;
-  }
-  bool is_area() const override { return true; }
   bool seen_by_light_paths_only() const override { return true; }
 
   // A point of the scene lies on one emitting point's normal at most.
@@ -59,11 +49,6 @@ class DirectionalAreaEmitter final : public Emitter {
   // Exact for a constant radiance; with a texture, its mean over (u, v)
   // stands for its mean over the surface, as for `area`.
   Color power() const override { return radiance_->mean() * shape_->area(); }
-
- private:
-  std::shared_ptr<Texture> radiance_;
-  SourceLocation where_;
-  const Shape* shape_ = nullptr;
 };
 
 }  // namespace

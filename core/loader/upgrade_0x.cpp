@@ -1,15 +1,15 @@
 #include "core/loader/upgrade_0x.h"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include <sstream>
 
 #include "core/color/srgb_transfer.h"
+#include "core/math/color.h"
+#include "core/registry/property_value.h"
 
 namespace caustica {
 namespace {
@@ -114,10 +114,10 @@ void upgrade_shutter(XmlNode& sensor) {
   *duration = XmlNode{"float", {{"name", "shutter_close"}, {"value", close}}, {}, duration->where};
 }
 
-// "#rrggbb" as three numbers in [0, 1], or none.
-std::optional<std::array<float, 3>> parse_hex_colour(const std::string& text) {
+// "#rrggbb" as a colour in [0, 1]^3, or none.
+std::optional<Color> parse_hex_colour(const std::string& text) {
   if (text.size() != 7 || text[0] != '#') return std::nullopt;
-  std::array<float, 3> out;
+  float out[3];
   for (int i = 0; i < 3; ++i) {
     unsigned byte = 0;
     const char* begin = text.data() + 1 + 2 * i;
@@ -125,19 +125,7 @@ std::optional<std::array<float, 3>> parse_hex_colour(const std::string& text) {
     if (ec != std::errc() || end != begin + 2) return std::nullopt;
     out[i] = float(byte) / 255;
   }
-  return out;
-}
-
-// One number or three, separated by commas or spaces, as <rgb> takes them.
-std::optional<std::array<float, 3>> parse_numbers(const std::string& text) {
-  std::string spaced = text;
-  std::replace(spaced.begin(), spaced.end(), ',', ' ');
-  std::istringstream in(spaced);
-  std::vector<float> values;
-  for (float v; in >> v;) values.push_back(v);
-  if (!in.eof() || (values.size() != 1 && values.size() != 3)) return std::nullopt;
-  if (values.size() == 1) return std::array<float, 3>{values[0], values[0], values[0]};
-  return std::array<float, 3>{values[0], values[1], values[2]};
+  return Color(out[0], out[1], out[2]);
 }
 
 }  // namespace
@@ -146,12 +134,17 @@ void upgrade_srgb(XmlNode& srgb) {
   srgb.tag = "rgb";
   for (auto& [key, value] : srgb.attributes) {
     if (key != "value") continue;
-    auto encoded = parse_hex_colour(value);
-    if (!encoded) encoded = parse_numbers(value);
-    if (!encoded) return;
+    std::optional<Color> encoded = parse_hex_colour(value);
+    if (!encoded) {
+      try {
+        encoded = std::get<Color>(parse_value_text(ValueKind::Rgb, value, srgb.where).value);
+      } catch (const SceneError&) {
+        return;  // left for the parser to refuse, with its message
+      }
+    }
     char text[96];
-    std::snprintf(text, sizeof text, "%.9g, %.9g, %.9g", double(srgb_to_linear((*encoded)[0])),
-                  double(srgb_to_linear((*encoded)[1])), double(srgb_to_linear((*encoded)[2])));
+    std::snprintf(text, sizeof text, "%.9g, %.9g, %.9g", double(srgb_to_linear(encoded->r)),
+                  double(srgb_to_linear(encoded->g)), double(srgb_to_linear(encoded->b)));
     value = text;
   }
 }
