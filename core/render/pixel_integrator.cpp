@@ -29,7 +29,7 @@ class PixelRun final : public IntegratorRun {
     for_each_camera_sample(
         scene_, seed_, tiles_, range.first, range.count, channels_, nullptr, estimator_->pass_time(),
         [&](Vec2i pixel, uint64_t i, const CameraSample& cs, SampleScratch& s) {
-          estimator_->sample(cs.ray, *s.sampler, s.values);
+          estimator_->sample(pixel, cs.ray, *s.sampler, s.values);
           target.film.add_sample({pixel, i}, s.values, cs.weight);
         },
         [&](const Tile& tile) {
@@ -43,7 +43,7 @@ class PixelRun final : public IntegratorRun {
     auto sampler = scene_.sensor().sampler()->clone();
     ReplayedSample out{std::vector<float>(channels_), {}};
     const CameraSample cs = sample_camera_ray(scene_, *sampler, pixel, index, seed_, estimator_->pass_time());
-    estimator_->sample(cs.ray, *sampler, out.values);
+    estimator_->sample(pixel, cs.ray, *sampler, out.values);
     return out;
   }
 
@@ -62,7 +62,7 @@ class RadianceEstimator final : public PixelEstimator {
   RadianceEstimator(const RadianceIntegrator& integrator, const Scene& scene)
       : integrator_(integrator), scene_(scene) {}
 
-  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override {
+  void sample(Vec2i /*pixel*/, const Ray& ray, Sampler& sampler, std::span<float> out) const override {
     const Color L = integrator_.Li(scene_, ray, sampler);
     out[0] = L.r;
     out[1] = L.g;

@@ -25,9 +25,11 @@ class PixelEstimator {
   // the pass's paths must share one (core/render/pass_time.h); else each
   // ray draws its own.
   virtual std::optional<float> pass_time() const { return std::nullopt; }
-  // Estimates the channels along one camera ray; every number it draws
-  // comes from `sampler`, which is on the pixel's camera stream.
-  virtual void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const = 0;
+  // Estimates the channels along one camera ray through `pixel`; every
+  // number it draws comes from `sampler`, which is on the pixel's camera
+  // stream. The samples of one pixel in a pass come from one thread, in
+  // index order.
+  virtual void sample(Vec2i pixel, const Ray& ray, Sampler& sampler, std::span<float> out) const = 0;
   virtual std::string summary() const { return ""; }
 };
 

@@ -100,10 +100,10 @@ class AovEstimator final : public PixelEstimator {
     return std::nullopt;
   }
 
-  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override {
+  void sample(Vec2i pixel, const Ray& ray, Sampler& sampler, std::span<float> out) const override {
     size_t at = 0;
     for (size_t i = 0; i < estimators_.size(); ++i) {
-      estimators_[i]->sample(ray, sampler, out.subspan(at, widths_[i]));
+      estimators_[i]->sample(pixel, ray, sampler, out.subspan(at, widths_[i]));
       at += widths_[i];
     }
     evaluator_.evaluate(ray, scene_.intersect_shown(ray), out.subspan(at));

@@ -29,6 +29,13 @@
 // that weight would end guided paths in proportion as they were sent
 // toward the light.
 //
+// Guiding costs time at every vertex, and guided paths stay longer in the
+// scene, so it pays only where it cuts the variance further than that:
+// from pass 2 on, each training pass's samples are weighed against pass
+// 0's, unguided (GuidingPayoff), and where the guided ones cost more per
+// unit of error, guiding stops and every later sample is path's. The
+// decision uses earlier samples only, so each later sample stays unbiased.
+//
 // Records are summed in fixed point (FixedPointSum), and the trees are
 // rebuilt from them between passes in one thread, so the image is the same
 // for any thread count. A render of a range of samples, a replayed sample
@@ -49,6 +56,7 @@
 #include "core/render/sample_wavelengths.h"
 #include "core/scene/scene.h"
 #include "integrators/path/guiding/guided_radiance.h"
+#include "integrators/path/guiding/guiding_payoff.h"
 #include "integrators/path/guiding/guiding_settings.h"
 #include "integrators/path/guiding/light_path_records.h"
 
@@ -64,13 +72,15 @@ class GuidedEstimator final : public PixelEstimator {
 
   uint32_t max_pass_samples() const override { return std::max(16u, 1u << (training_passes_ - 1)); }
   bool begin_pass(const PassRange& range, const std::atomic<bool>* stop) override;
-  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
+  void sample(Vec2i pixel, const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override;
 
  private:
   // Traces pass `pass` over every pixel, recording only.
   bool train_alone(uint32_t pass, const std::atomic<bool>* stop);
   bool record_light_paths_of(uint32_t pass, const std::atomic<bool>* stop);
+  // Starts recording pass `pass`: its light paths, and its samples' payoff.
+  bool start_recording(uint32_t pass, const std::atomic<bool>* stop);
 
   const Scene& scene_;
   uint64_t seed_;
@@ -78,11 +88,14 @@ class GuidedEstimator final : public PixelEstimator {
   const GuidingSettings& guiding_;
   uint32_t training_passes_;  // 0 where guiding cannot help the scene
   std::unique_ptr<GuidingTree> tree_;
+  std::unique_ptr<GuidingPayoff> payoff_;
   GuidedWalk walk_;
   uint32_t built_ = 0;          // the training passes the current distribution learnt from
   int64_t recorded_pass_ = -1;  // the pass whose records the recorders hold, every pixel's
   uint32_t passes_alone_ = 0;
   int64_t capped_after_ = -1;  // the first pass after which the memory cap held refinement back
+  int64_t unpaid_after_ = -1;  // the guided pass after which unguided paths were judged cheaper
+  GuidingPayoff::Verdict verdict_;
 };
 
 class GuidedPathIntegrator final : public PixelIntegrator {
@@ -112,7 +125,10 @@ class GuidedPathIntegrator final : public PixelIntegrator {
            " samples per pixel, each counted in the image), mixed with BSDF sampling (bsdf_fraction " +
            std::to_string(guiding_.bsdf_fraction) + ") by one-sample MIS; surfaces with delta lobes unguided" +
            (scene.features().media ? "; media: scattering in a medium follows its phase function, unguided" : "") +
-           "; trees capped at " + std::to_string(guiding_.refinement.max_bytes >> 20) + " MiB";
+           "; trees capped at " + std::to_string(guiding_.refinement.max_bytes >> 20) + " MiB" +
+           (guiding_.always_guide ? std::string("; guides every pass (always_guide)")
+                                  : std::string("; guiding stops after a training pass whose guided samples cost more "
+                                                "per unit of error than pass 0's unguided ones"));
   }
 
   std::string distributed_note() const override {
@@ -134,29 +150,38 @@ GuidedEstimator::GuidedEstimator(const GuidedPathIntegrator& integrator, const S
       training_passes_(guiding_pointless(scene, integrator.path_.max_depth).empty()
                            ? uint32_t(integrator.guiding_.training_passes)
                            : 0),
-      tree_(std::make_unique<GuidingTree>(scene.bounds())) {
+      tree_(std::make_unique<GuidingTree>(scene.bounds())),
+      payoff_(std::make_unique<GuidingPayoff>(scene.sensor().film()->width(), scene.sensor().film()->height())) {
   walk_.bsdf_fraction = guiding_.bsdf_fraction;
   walk_.camera_directions = !(guiding_.light_paths > 0);
 }
 
 bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {
   const uint32_t target = std::min(range.pass, training_passes_);
-  while (built_ < target) {
+  while (unpaid_after_ < 0 && built_ < target) {
     if (recorded_pass_ != int64_t(built_) && !train_alone(built_, stop)) return false;
     tree_->refine(guiding_.refinement, uint64_t(1) << built_);
     if (tree_->capped() && capped_after_ < 0) capped_after_ = built_;
+    if (built_ >= GuidingPayoff::kFirstJudged) {
+      verdict_ = payoff_->judge();
+      if (!guiding_.always_guide && !verdict_.pays()) unpaid_after_ = built_;
+    }
     ++built_;
     recorded_pass_ = -1;
   }
   const Pass pass = pass_containing(range.first, max_pass_samples());
   const bool whole_pass = range.first == pass.first && range.count == pass.count;
-  walk_.guide = built_ > 0;
-  walk_.record = range.pass < training_passes_ && whole_pass;
-  if (walk_.record) {
-    recorded_pass_ = range.pass;
-    return record_light_paths_of(range.pass, stop);
-  }
+  const bool guiding = unpaid_after_ < 0;
+  walk_.guide = guiding && built_ > 0;
+  walk_.record = guiding && range.pass < training_passes_ && whole_pass;
+  if (walk_.record) return start_recording(range.pass, stop);
   return true;
+}
+
+bool GuidedEstimator::start_recording(uint32_t pass, const std::atomic<bool>* stop) {
+  recorded_pass_ = pass;
+  payoff_->begin_pass(pass);
+  return record_light_paths_of(pass, stop);
 }
 
 bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) {
@@ -165,10 +190,12 @@ bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) 
   const Film& film = *scene_.sensor().film();
   const uint64_t first = (uint64_t(1) << pass) - 1, count = uint64_t(1) << pass;
   ++passes_alone_;
-  if (!record_light_paths_of(pass, stop)) return false;
+  if (!start_recording(pass, stop)) return false;
   return for_each_camera_sample(
       scene_, seed_, make_tiles(film.width(), film.height()), first, count, 3, stop, std::nullopt,
-      [&](Vec2i, uint64_t, const CameraSample& cs, SampleScratch& s) { sample(cs.ray, *s.sampler, s.values); },
+      [&](Vec2i pixel, uint64_t, const CameraSample& cs, SampleScratch& s) {
+        sample(pixel, cs.ray, *s.sampler, s.values);
+      },
       [](const Tile&) {});
 }
 
@@ -180,9 +207,11 @@ bool GuidedEstimator::record_light_paths_of(uint32_t pass, const std::atomic<boo
   return record_light_paths(scene_, *tree_, count, pass, seed_, path_, stop);
 }
 
-void GuidedEstimator::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {
+void GuidedEstimator::sample(Vec2i pixel, const Ray& ray, Sampler& sampler, std::span<float> out) const {
   SampleWavelengths w(scene_, sampler);
-  const Color L = w.to_rgb(trace_guided_path(scene_, ray, sampler, path_, *tree_, walk_, w.get()));
+  WalkCost cost;
+  const Color L = w.to_rgb(trace_guided_path(scene_, ray, sampler, path_, *tree_, walk_, w.get(), cost));
+  if (walk_.record) payoff_->add(pixel, L, cost);
   out[0] = L.r;
   out[1] = L.g;
   out[2] = L.b;
@@ -197,6 +226,15 @@ std::string GuidedEstimator::summary() const {
                   std::to_string(tree_->directional_nodes()) + " directional nodes, " + mib + " MiB";
   if (capped_after_ >= 0)
     s += ", max_tree_memory reached after pass " + std::to_string(capped_after_) + ": refinement stopped there";
+  char figures[160];
+  std::snprintf(figures, sizeof figures,
+                "relative variance %.3g at a cost of %.3g vertices per sample, against %.3g at %.3g unguided",
+                verdict_.guided_variance, verdict_.guided_cost, verdict_.unguided_variance, verdict_.unguided_cost);
+  if (unpaid_after_ >= 0)
+    s += ", guiding stopped after pass " + std::to_string(unpaid_after_) + " (" + figures +
+         "); later samples are unguided";
+  else if (built_ > GuidingPayoff::kFirstJudged)
+    s += ", pass " + std::to_string(built_ - 1) + ": " + figures;
   if (passes_alone_ > 0) s += ", " + std::to_string(passes_alone_) + " passes traced for learning alone";
   return s;
 }

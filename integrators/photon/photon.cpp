@@ -69,7 +69,7 @@ class CausticRounds final : public PixelEstimator {
   uint32_t max_pass_samples() const override;
   bool begin_pass(const PassRange& range, const std::atomic<bool>* stop) override;
   std::optional<float> pass_time() const override { return round_time_; }
-  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override;
+  void sample(Vec2i /*pixel*/, const Ray& ray, Sampler& sampler, std::span<float> out) const override;
   std::string summary() const override {
     if (!enabled_) return "(photon pass skipped)";
     char radius[32];
@@ -164,7 +164,7 @@ bool CausticRounds::begin_pass(const PassRange& range, const std::atomic<bool>* 
 }
 
 // Without photons, spectral paths draw their own wavelengths, as path's do.
-void CausticRounds::sample(const Ray& ray, Sampler& sampler, std::span<float> out) const {
+void CausticRounds::sample(Vec2i, const Ray& ray, Sampler& sampler, std::span<float> out) const {
   Color L;
   if (!enabled_) {
     SampleWavelengths w(scene_, sampler);

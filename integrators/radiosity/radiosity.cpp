@@ -29,7 +29,7 @@ class RadiosityEstimator final : public PixelEstimator {
   RadiosityEstimator(const Scene& scene, const RadiositySettings& settings, int gather)
       : solution_(scene, settings), gather_(gather) {}
 
-  void sample(const Ray& ray, Sampler& sampler, std::span<float> out) const override {
+  void sample(Vec2i /*pixel*/, const Ray& ray, Sampler& sampler, std::span<float> out) const override {
     const Color L = gather_ > 0 ? solution_.gathered(ray, sampler, gather_) : solution_.interpolated(ray);
     out[0] = L.r;
     out[1] = L.g;

@@ -52,7 +52,7 @@ std::unique_ptr<Sampler> sampler() {
 // just above it, estimated from n samples: mean and standard error.
 // One estimate along `ray` by the scene file's per-pixel integrator.
 void sample_along(const LoadedScene& scene, const Ray& ray, Sampler& s, std::span<float> out) {
-  dynamic_cast<const PixelIntegrator&>(*scene.integrator).estimator(*scene, 0)->sample(ray, s, out);
+  dynamic_cast<const PixelIntegrator&>(*scene.integrator).estimator(*scene, 0)->sample({0, 0}, ray, s, out);
 }
 
 std::pair<double, double> estimate(const LoadedScene& scene, float x, float y, int n) {

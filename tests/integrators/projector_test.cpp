@@ -92,7 +92,7 @@ TEST(Projector, DirectLightReadsTheCameraMapping) {
   for (const auto& [x, y] : {std::pair{-0.2f, -0.2f}, {0.2f, -0.2f}, {0.2f, 0.25f}, {-0.3f, 0.4f}, {0.7f, 0.0f}}) {
     float out[3];
     sampler->start_sample(SampleKey::camera({0, 0}), 0, 0);
-    estimator->sample({{x, y, 0.01f}, {0, 0, -1}}, *sampler, out);
+    estimator->sample({0, 0}, {{x, y, 0.01f}, {0, 0, -1}}, *sampler, out);
     const double u = (1 + x / t) / 2, v = (1 - y / t) / 2;
     const bool in_frame = u > 0 && u < 1 && v > 0 && v < 1;
     const double check = (u < 0.5) == (v < 0.5) ? 0.25 : 1.5;

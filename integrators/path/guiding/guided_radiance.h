@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/render/scatter_density.h"
+#include "integrators/path/guiding/guiding_payoff.h"
 #include "integrators/path/guiding/spatial_tree.h"
 #include "integrators/path/path_radiance.h"
 
@@ -58,6 +59,8 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
       const DirectionalDistribution& d = region_->guides[bucket_].sampling;
       if (walk_.guide && !d.empty()) guide_ = &d;
     }
+    ++cost.vertices;
+    if (guide_) ++cost.guided;
     this->density_ = guide_ ? this : nullptr;
     return PathRadiance<kMedia>::at_vertex(v);
   }
@@ -102,6 +105,8 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
       r.region->record(r.bucket, {r.x, r.y}, channels ? sum / channels / double(r.pdf) : 0);
     }
   }
+
+  WalkCost cost;
 
  private:
   float pdf(Vec3 wi, float bsdf_pdf) const override {
@@ -158,7 +163,8 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
 };
 
 // Radiance along `ray` by the guided walk; spectral as trace_path.
+// `cost` receives what the walk cost.
 Color trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
-                        const GuidedWalk& walk, Wavelengths* wavelengths);
+                        const GuidedWalk& walk, Wavelengths* wavelengths, WalkCost& cost);
 
 }  // namespace caustica

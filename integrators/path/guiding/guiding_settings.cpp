@@ -32,6 +32,7 @@ GuidingSettings read_guiding_settings(const Properties& props) {
     throw props.error("light_paths",
                       "must be between 0 and 1024 (light paths per camera sample of a training pass; 0 learns "
                       "from the camera paths alone)");
+  s.always_guide = props.get_bool("always_guide");
   return s;
 }
 
@@ -48,7 +49,10 @@ std::vector<ParamSpec> guiding_params() {
           {"max_tree_memory", ParamType::Integer, "256", "MiB the guiding trees may take; refinement stops there"},
           {"light_paths", ParamType::Float, "1",
            "light paths traced per camera sample of a training pass, whose records teach the directions (0 to "
-           "1024); 0 learns them from the camera paths' records, as Müller et al. 2017"}};
+           "1024); 0 learns them from the camera paths' records, as Müller et al. 2017"},
+          {"always_guide", ParamType::Boolean, "false",
+           "guide every pass; by default a training pass whose guided samples cost more (relative variance x "
+           "vertices) than pass 0's unguided ones ends guiding, and later samples are unguided"}};
 }
 
 std::string guiding_pointless(const Scene& scene, int64_t max_depth) {

@@ -20,10 +20,12 @@ class Scene;
 //   max_tree_memory        MiB the trees may take; refinement stops there
 //   light_paths            light paths traced per camera sample of a training pass, whose
 //                          records teach the directions; 0: camera paths' records teach them
+//   always_guide           keep guiding where the training passes judge it costs more than it saves
 struct GuidingSettings {
   int training_passes = 6;
   float bsdf_fraction = 0.5f;
   double light_paths = 1;
+  bool always_guide = false;
   GuidingRefinement refinement;
 };
 
