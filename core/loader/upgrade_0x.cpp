@@ -41,7 +41,9 @@ const Ignored kIgnored[] = {
     {"integrator", "sample_direct", "bdpt always samples every strategy"},
     {"emitter", "sampling_weight", "emitters are chosen in proportion to their power"},
     {"sampler", "dimension", "caustica's samplers draw as many dimensions as each path needs"},
-    {"bsdf", "preserve_colors", "the material's colours are used as given"}};
+    {"bsdf", "preserve_colors", "the material's colours are used as given"},
+    {"texture", "max_anisotropy", "caustica keeps no MIP maps to filter anisotropically"},
+    {"texture", "cache", "caustica reads the image itself and keeps no MIP-map cache file"}};
 
 bool has_name(const XmlNode& child, const char* name) {
   const std::string* n = child.attribute("name");

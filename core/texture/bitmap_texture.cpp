@@ -10,7 +10,13 @@
 // transfer function (IEC 61966-2-1); floating-point images (EXR, HDR) are
 // linear already and used as stored. One channel (grey) gives grey colours;
 // with two channels the second (alpha) is ignored, and from four or more
-// the first three are used as RGB. mean() is the average over the pixels.
+// the first three are used as RGB. `channel` (Mitsuba 0.x's) instead makes
+// a grey texture of one named channel, e.g. "a"; alpha is never decoded.
+// mean() is the average over the pixels.
+//
+// Outside [0, 1], `wrap_mode` repeats, mirrors or clamps the image, or reads
+// zero or one everywhere (0.x's "zero" and "one"); `wrap_mode_u` and
+// `wrap_mode_v` set either axis apart, as 0.x's wrapModeU and wrapModeV.
 //
 //   <texture type="bitmap" name="reflectance">
 //       <string name="filename" value="textures/wood.png"/>
@@ -20,6 +26,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -36,11 +43,15 @@
 namespace caustica {
 namespace {
 
-enum class WrapMode { Repeat, Mirror, Clamp };
+enum class WrapMode { Repeat, Mirror, Clamp, Zero, One };
 
-// A pixel index, possibly outside [0, n), mapped into it.
+// A pixel index, possibly outside [0, n), mapped into it; -1 where the
+// mode reads a constant there instead.
 int wrap(int i, int n, WrapMode mode) {
   switch (mode) {
+    case WrapMode::Zero:
+    case WrapMode::One:
+      return i >= 0 && i < n ? i : -1;
     case WrapMode::Clamp:
       return std::clamp(i, 0, n - 1);
     case WrapMode::Mirror: {
@@ -71,19 +82,13 @@ class BitmapTexture final : public Texture {
       bilinear_ = false;
     else
       throw props.error("filter_type", "unknown filter '" + filter + "' (accepted: bilinear, nearest)");
-    const std::string wrap_name = props.get_string("wrap_mode");
-    if (wrap_name == "repeat")
-      wrap_ = WrapMode::Repeat;
-    else if (wrap_name == "mirror")
-      wrap_ = WrapMode::Mirror;
-    else if (wrap_name == "clamp")
-      wrap_ = WrapMode::Clamp;
-    else
-      throw props.error("wrap_mode", "unknown wrap mode '" + wrap_name + "' (accepted: repeat, mirror, clamp)");
+    const WrapMode both = wrap_mode(props, "wrap_mode");
+    wrap_u_ = props.has("wrap_mode_u") ? wrap_mode(props, "wrap_mode_u") : both;
+    wrap_v_ = props.has("wrap_mode_v") ? wrap_mode(props, "wrap_mode_v") : both;
     if (props.has("to_uv")) to_uv_ = props.get_transform("to_uv");
     if (props.has("format")) props.warn("format", "is ignored: caustica keeps textures in float");
     if (props.has("accel")) props.warn("accel", "is ignored: it concerns GPU texture units");
-    load(props, file, props.get_bool("raw"));
+    load(props, file, props.get_bool("raw"), props.has("channel") ? props.get_string("channel") : "");
   }
 
   Color eval(Vec2 uv) const override {
@@ -103,12 +108,22 @@ class BitmapTexture final : public Texture {
            (texel(ix, iy + 1) * (1 - tx) + texel(ix + 1, iy + 1) * tx) * ty;
   }
 
+  static WrapMode wrap_mode(const Properties& props, const std::string& name) {
+    const std::string mode = props.get_string(name);
+    if (mode == "repeat") return WrapMode::Repeat;
+    if (mode == "mirror") return WrapMode::Mirror;
+    if (mode == "clamp") return WrapMode::Clamp;
+    if (mode == "zero") return WrapMode::Zero;
+    if (mode == "one") return WrapMode::One;
+    throw props.error(name, "unknown wrap mode '" + mode + "' (accepted: repeat, mirror, clamp, zero, one)");
+  }
+
   Color mean() const override { return mean_; }
   std::optional<Vec2i> resolution() const override { return Vec2i{width_, height_}; }
   ValueRange range() const override { return range_; }
 
  private:
-  void load(const Properties& props, const std::filesystem::path& file, bool raw) {
+  void load(const Properties& props, const std::filesystem::path& file, bool raw, const std::string& channel) {
     if (const std::string problem = input_file_problem(file); !problem.empty())
       throw props.error("filename", "image file '" + file.string() + "' " + problem);
     auto in = OIIO::ImageInput::open(file.string());
@@ -124,7 +139,24 @@ class BitmapTexture final : public Texture {
     const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
     const bool is_float =
         base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE;
-    const bool decode = !raw && !is_float;
+    bool decode = !raw && !is_float;
+    int only = -1;  // the one channel `channel` names
+    if (!channel.empty()) {
+      const auto lower = [](std::string t) {
+        for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return t;
+      };
+      std::string names;
+      for (int c = 0; c < channels; ++c) {
+        const std::string name = c < int(spec.channelnames.size()) ? spec.channelnames[c] : std::to_string(c);
+        if (lower(name) == lower(channel)) only = c;
+        names += (c ? ", " : "") + name;
+      }
+      if (only < 0)
+        throw props.error("channel",
+                          "image '" + file.string() + "' has no channel '" + channel + "' (it has " + names + ")");
+      if (only == spec.alpha_channel || lower(channel) == "a" || lower(channel) == "alpha") decode = false;
+    }
 
     width_ = spec.width;
     height_ = spec.height;
@@ -133,7 +165,7 @@ class BitmapTexture final : public Texture {
     double sum[3] = {};
     for (size_t i = 0; i < pixels_.size(); ++i) {
       const float* p = &data[i * channels];
-      Color c = channels >= 3 ? Color(p[0], p[1], p[2]) : Color(p[0]);
+      Color c = only >= 0 ? Color(p[only]) : channels >= 3 ? Color(p[0], p[1], p[2]) : Color(p[0]);
       if (decode) c = {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
       if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
         throw props.error("filename", "image '" + file.string() + "' has a pixel that is not finite, at (" +
@@ -148,14 +180,19 @@ class BitmapTexture final : public Texture {
     mean_ = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
   }
 
-  Color texel(int x, int y) const { return pixels_[size_t(wrap(y, height_, wrap_)) * width_ + wrap(x, width_, wrap_)]; }
+  Color texel(int x, int y) const {
+    const int i = wrap(x, width_, wrap_u_), j = wrap(y, height_, wrap_v_);
+    if (i < 0) return Color(wrap_u_ == WrapMode::One ? 1.0f : 0.0f);
+    if (j < 0) return Color(wrap_v_ == WrapMode::One ? 1.0f : 0.0f);
+    return pixels_[size_t(j) * width_ + i];
+  }
 
   int width_ = 0, height_ = 0;
   std::vector<Color> pixels_;  // linear RGB, top row first
   Color mean_;
   ValueRange range_;
   bool bilinear_ = true;
-  WrapMode wrap_ = WrapMode::Repeat;
+  WrapMode wrap_u_ = WrapMode::Repeat, wrap_v_ = WrapMode::Repeat;
   std::optional<Transform> to_uv_;
 };
 
@@ -165,7 +202,12 @@ CAUSTICA_REGISTER_PLUGIN(
     BitmapTexture, "texture", "bitmap",
     {{"filename", ParamType::String, std::nullopt, "image file, relative to the scene file"},
      {"filter_type", ParamType::String, "bilinear", "bilinear or nearest"},
-     {"wrap_mode", ParamType::String, "repeat", "what (u, v) outside [0, 1]^2 read: repeat, mirror or clamp"},
+     {"wrap_mode", ParamType::String, "repeat",
+      "what (u, v) outside [0, 1]^2 read: repeat, mirror, clamp, zero or one"},
+     {"wrap_mode_u", ParamType::String, std::nullopt, "wrap_mode along u alone (optional; Mitsuba 0.x's wrapModeU)"},
+     {"wrap_mode_v", ParamType::String, std::nullopt, "wrap_mode along v alone (optional; Mitsuba 0.x's wrapModeV)"},
+     {"channel", ParamType::String, std::nullopt,
+      "a grey texture of this one channel of the image, by name, e.g. r or a (optional; Mitsuba 0.x's)"},
      {"raw", ParamType::Boolean, "false", "use stored values without sRGB decoding"},
      {"to_uv", ParamType::Transform, std::nullopt, "applied to (u, v, 0) before the lookup (optional)"},
      {"format", ParamType::String, std::nullopt, "accepted and ignored (textures are kept in float)"},

@@ -249,6 +249,42 @@ TEST(SceneLoader, ZeroPointSixColoursTexturesAndSamplersAreUpgraded) {
   EXPECT_NE(check, scene->shapes()[3]->bsdf()->albedo(at, {0, 0, 1}));
 }
 
+// 0.6's bitmap parameters: wrapModeU and wrapModeV wrap each axis apart,
+// channel reads one channel, maxAnisotropy and cache are dropped with a
+// note each.
+TEST(SceneLoader, ZeroPointSixBitmapParametersAreRead) {
+  const auto image = std::filesystem::temp_directory_path() / "caustica_upgrade_wrap.pfm";
+  {
+    // 2 x 1, one channel: 0.25 left, 0.75 right (PFM stores rows bottom up).
+    std::ofstream out(image, std::ios::binary);
+    out << "Pf\n2 1\n-1.0\n";
+    const float px[2] = {0.25f, 0.75f};
+    out.write(reinterpret_cast<const char*>(px), sizeof px);
+  }
+  const auto scene = load_scene_string(
+      "<scene version='0.6.0'>\n<shape type='sphere'><bsdf type='diffuse'><texture type='bitmap' "
+      "name='reflectance'><string name='filename' value='" +
+          image.string() +
+          "'/><string name='wrapModeU' value='clamp'/><string name='wrapModeV' value='zero'/>\n"
+          "<float name='maxAnisotropy' value='16'/>\n<boolean name='cache' value='false'/>"
+          "<string name='filterType' value='nearest'/><string name='channel' value='y'/></texture></bsdf></shape>"
+          "</scene>",
+      "old.xml");
+  EXPECT_THAT(scene.warnings,
+              testing::ElementsAre("old.xml:3: parameter 'max_anisotropy' of texture 'bitmap' (Mitsuba 0.x) is "
+                                   "ignored: caustica keeps no MIP maps to filter anisotropically",
+                                   "old.xml:4: parameter 'cache' of texture 'bitmap' (Mitsuba 0.x) is ignored: "
+                                   "caustica reads the image itself and keeps no MIP-map cache file"));
+  const auto albedo = [&](float u, float v) {
+    BsdfContext at;
+    at.uv = {u, v};
+    return scene->shapes()[0]->bsdf()->albedo(at, {0, 0, 1}).r;
+  };
+  EXPECT_NEAR(albedo(1.6f, 0.5f), 0.75f, 1e-6);  // clamped along u
+  EXPECT_NEAR(albedo(-0.6f, 0.5f), 0.25f, 1e-6);
+  EXPECT_EQ(albedo(0.25f, 1.5f), 0.0f);  // zero along v
+}
+
 struct BadInput {
   const char* what;
   std::string xml;

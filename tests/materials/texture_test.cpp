@@ -170,6 +170,56 @@ TEST(BitmapTexture, WrapModes) {
   }
 }
 
+// Mitsuba 0.x's "zero" and "one": the image inside [0, 1], a constant
+// outside it, bilinear filtering blending the border toward it.
+TEST(BitmapTexture, ZeroAndOneReadAConstantOutsideTheImage) {
+  const auto file = write_image("row.exr", 4, 1, 1, {0.5f, 1.5f, 2.5f, 3.5f}, OIIO::TypeDesc::FLOAT);
+  for (const char* mode : {"zero", "one"}) {
+    const float outside = std::string(mode) == "one" ? 1.0f : 0.0f;
+    const TextureProbe tex(bitmap_xml(file, option("filter_type", "nearest") + option("wrap_mode", mode)));
+    EXPECT_NEAR(tex(0.6f, 0.5f).r, 2.5f, 1e-5f) << mode;
+    EXPECT_NEAR(tex(0.1f, 0.5f).g, 0.5f, 1e-5f) << mode;
+    for (float u : {1.1f, -0.1f, 7.3f, -2.6f}) EXPECT_EQ(tex(u, 0.5f), Color(outside)) << mode << " u " << u;
+    EXPECT_EQ(tex(0.6f, 1.2f), Color(outside)) << mode;
+    const TextureProbe smooth(bitmap_xml(file, option("wrap_mode", mode)));
+    EXPECT_NEAR(smooth(0.0f, 0.5f).r, 0.5f * (0.5f + outside), 1e-5f) << mode;  // half way to the constant
+  }
+}
+
+// wrap_mode_u and wrap_mode_v (0.x's wrapModeU and wrapModeV) each
+// override wrap_mode along one axis.
+TEST(BitmapTexture, EachAxisWrapsApart) {
+  const TextureProbe tex(bitmap_xml(
+      quad(), option("filter_type", "nearest") + option("wrap_mode_u", "clamp") + option("wrap_mode_v", "repeat")));
+  EXPECT_NEAR(tex(1.3f, 0.25f).r, 2.0f, 1e-5f);  // clamped to the right column
+  EXPECT_NEAR(tex(0.25f, 1.3f).r, 1.0f, 1e-5f);  // v 0.3: the top row again
+  EXPECT_NEAR(tex(-0.2f, 0.75f).r, 4.0f, 1e-5f);
+  const TextureProbe mixed(bitmap_xml(
+      quad(), option("filter_type", "nearest") + option("wrap_mode", "mirror") + option("wrap_mode_v", "zero")));
+  EXPECT_NEAR(mixed(1.3f, 0.25f).r, 2.0f, 1e-5f);   // u mirrored to 0.7
+  EXPECT_NEAR(mixed(-0.3f, 0.75f).r, 4.0f, 1e-5f);  // u mirrored to 0.3
+  EXPECT_EQ(mixed(0.25f, 1.3f), Color(0.0f));
+}
+
+// 0.x's `channel`: one named channel (any case) as a grey texture; alpha is
+// never decoded, the colour channels of an 8-bit image are.
+TEST(BitmapTexture, ChannelMakesAGreyTextureOfOneChannel) {
+  const auto rgba = write_image("channels.exr", 1, 1, 4, {0.1f, 0.2f, 0.3f, 0.4f}, OIIO::TypeDesc::FLOAT);
+  const Color alpha = TextureProbe(bitmap_xml(rgba, option("channel", "a")))(0.5f, 0.5f);
+  EXPECT_NEAR(alpha.r, 0.4f, 1e-6f);
+  EXPECT_EQ(alpha.r, alpha.g);
+  EXPECT_EQ(alpha.r, alpha.b);
+  EXPECT_NEAR(TextureProbe(bitmap_xml(rgba, option("channel", "G")))(0.5f, 0.5f).b, 0.2f, 1e-6f);
+  const auto rgb = write_image("channels.png", 1, 1, 3, bytes({64, 128, 200}), OIIO::TypeDesc::UINT8);
+  const Color green = TextureProbe(bitmap_xml(rgb, option("channel", "g")))(0.5f, 0.5f);
+  EXPECT_NEAR(green.r, srgb_eotf(128 / 255.0), 1e-6);
+  EXPECT_EQ(green.r, green.b);
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='rectangle'><bsdf type='diffuse'>" +
+                               bitmap_xml(rgba, option("channel", "z")) + "</bsdf></shape></scene>"),
+              testing::HasSubstr("'channel' of texture 'bitmap': image '" + rgba.string() +
+                                 "' has no channel 'z' (it has R, G, B, A)"));
+}
+
 TEST(BitmapTexture, MeanIsTheImageAverage) {
   const PluginInfo* info = Registry::instance().find("texture", "bitmap");
   ASSERT_TRUE(info);
@@ -214,6 +264,10 @@ TEST(BitmapTexture, BadInput) {
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='rectangle'><bsdf type='diffuse'>" +
                                bitmap_xml(quad(), option("wrap_mode", "wrap")) + "</bsdf></shape></scene>"),
               testing::HasSubstr("wrap_mode"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='rectangle'><bsdf type='diffuse'>" +
+                               bitmap_xml(quad(), option("wrap_mode_v", "tile")) + "</bsdf></shape></scene>"),
+              testing::HasSubstr("'wrap_mode_v' of texture 'bitmap': unknown wrap mode 'tile' (accepted: repeat, "
+                                 "mirror, clamp, zero, one)"));
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><shape type='rectangle'><bsdf type='diffuse'>" +
                                bitmap_xml(quad(), option("filter_type", "trilinear")) + "</bsdf></shape></scene>"),
               testing::HasSubstr("filter_type"));
