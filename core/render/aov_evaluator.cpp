@@ -1,9 +1,11 @@
 #include "core/render/aov_evaluator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/bsdf/surface_bsdf.h"
+#include "core/camera/sensor.h"
 #include "core/scene/scene.h"
 
 namespace caustica {
@@ -19,6 +21,8 @@ const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
                                                   {"coverage", AovKind::Coverage},
                                                   {"dp_du", AovKind::DpDu},
                                                   {"dp_dv", AovKind::DpDv},
+                                                  {"duv_dx", AovKind::DuvDx},
+                                                  {"duv_dy", AovKind::DuvDy},
                                                   {"prim_index", AovKind::PrimIndex},
                                                   {"shape_index", AovKind::ShapeIndex}};
 
@@ -36,6 +40,8 @@ const char* suffixes(AovKind kind) {
     case AovKind::ShapeIndex:
       return "I";
     case AovKind::Uv:
+    case AovKind::DuvDx:
+    case AovKind::DuvDy:
       return "UV";
     case AovKind::Depth:
       return "T";
@@ -43,6 +49,26 @@ const char* suffixes(AovKind kind) {
       return "A";
   }
   return "";
+}
+
+// d(u, v) between the pixel `ray` leaves through and its neighbour one
+// pixel along `step`: the neighbour's ray (through the lens centre) meets
+// the hit's tangent plane at p + dp, and dp = dp/du du + dp/dv dv is solved
+// for (du, dv) by least squares. Zero where no neighbour ray meets the plane.
+Vec2 uv_step(const Sensor& sensor, const Ray& ray, const SurfaceInteraction& si, Vec2 step) {
+  Vec2 raster;
+  if (sensor.We(ray, &raster).is_black()) return {};
+  const Ray next = sensor.generate_ray(raster + step, {0.5f, 0.5f}, ray.time);
+  const float facing = dot(si.ng, next.d);
+  if (!(std::abs(facing) > 1e-8f)) return {};
+  const float t = dot(si.ng, si.p - next.o) / facing;
+  if (!(t > 0)) return {};
+  const Vec3 dp = next.o + next.d * t - si.p;
+  const double a = dot(si.dpdu, si.dpdu), b = dot(si.dpdu, si.dpdv), c = dot(si.dpdv, si.dpdv);
+  const double det = a * c - b * b;
+  if (!(std::abs(det) > 0)) return {};
+  const double pu = dot(si.dpdu, dp), pv = dot(si.dpdv, dp);
+  return {float((c * pu - b * pv) / det), float((a * pv - b * pu) / det)};
 }
 
 }  // namespace
@@ -60,7 +86,7 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
     if (it == std::end(kKinds))
       throw std::invalid_argument("unknown kind '" + kind +
                                   "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth, coverage, "
-                                  "dp_du, dp_dv, prim_index, shape_index)");
+                                  "dp_du, dp_dv, duv_dx, duv_dy, prim_index, shape_index)");
     out.push_back({item.substr(0, colon), it->second});
     start = end + 1;
   }
@@ -75,7 +101,8 @@ std::vector<std::string> AovEvaluator::channels() const {
   return out;
 }
 
-void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& si, std::span<float> out) const {
+void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& si, std::span<float> out,
+                            const Sensor* sensor) const {
   std::fill(out.begin(), out.end(), 0.0f);
   if (!si) return;
   size_t c = 0;
@@ -113,6 +140,12 @@ void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteracti
       case AovKind::DpDv:
         put(si->dpdv, 3);
         break;
+      case AovKind::DuvDx:
+      case AovKind::DuvDy: {
+        const Vec2 d = sensor ? uv_step(*sensor, ray, *si, a.kind == AovKind::DuvDx ? Vec2(1, 0) : Vec2(0, 1)) : Vec2();
+        put({d.x, d.y, 0}, 2);
+        break;
+      }
       // Exact as floats up to 2^24.
       case AovKind::PrimIndex:
         put({float(si->prim), 0, 0}, 1);

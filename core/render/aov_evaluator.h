@@ -9,8 +9,26 @@
 #include "core/geometry/ray.h"
 
 namespace caustica {
+class Sensor;
+}
 
-enum class AovKind { Albedo, ShNormal, GeoNormal, Position, Uv, Depth, Coverage, DpDu, DpDv, PrimIndex, ShapeIndex };
+namespace caustica {
+
+enum class AovKind {
+  Albedo,
+  ShNormal,
+  GeoNormal,
+  Position,
+  Uv,
+  Depth,
+  Coverage,
+  DpDu,
+  DpDv,
+  DuvDx,
+  DuvDy,
+  PrimIndex,
+  ShapeIndex
+};
 
 struct AovSpec {
   std::string name;
@@ -18,7 +36,8 @@ struct AovSpec {
 };
 
 // Parses "name:kind,name:kind" (kinds: albedo, sh_normal, geo_normal,
-// position, uv, depth, coverage, dp_du, dp_dv, prim_index, shape_index);
+// position, uv, depth, coverage, dp_du, dp_dv, duv_dx, duv_dy, prim_index,
+// shape_index);
 // throws std::invalid_argument naming the bad item.
 std::vector<AovSpec> parse_aov_list(const std::string& text);
 
@@ -33,7 +52,11 @@ class AovEvaluator {
   // name.I (an index); without a name, only the suffix ("A").
   std::vector<std::string> channels() const;
   // The values at `hit`, the first surface `ray` meets (none: zeros).
-  void evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& hit, std::span<float> out) const;
+  // duv_dx and duv_dy, the change of (u, v) from one pixel to the next
+  // along x and y, need the `sensor` that made the ray (without one, or
+  // where the neighbouring rays miss the hit's tangent plane: zeros).
+  void evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& hit, std::span<float> out,
+                const Sensor* sensor = nullptr) const;
 
  private:
   std::vector<AovSpec> aovs_;

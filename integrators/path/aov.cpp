@@ -106,7 +106,7 @@ class AovEstimator final : public PixelEstimator {
       estimators_[i]->sample(pixel, ray, sampler, out.subspan(at, widths_[i]));
       at += widths_[i];
     }
-    evaluator_.evaluate(ray, scene_.intersect_shown(ray), out.subspan(at));
+    evaluator_.evaluate(ray, scene_.intersect_shown(ray), out.subspan(at), &scene_.sensor());
   }
 
   std::string summary() const override {
@@ -167,7 +167,7 @@ CAUSTICA_REGISTER_PLUGIN(
     AovIntegrator, "integrator", "aov",
     {{"aovs", ParamType::String, "albedo:albedo,nn:sh_normal,dd:depth",
       "comma-separated name:kind pairs; kinds albedo, sh_normal, geo_normal, position, uv, depth, coverage, dp_du, "
-      "dp_dv, prim_index, shape_index"}},
+      "dp_dv, duv_dx, duv_dy, prim_index, shape_index"}},
     {"integrator"});
 
 }  // namespace caustica

@@ -106,6 +106,47 @@ TEST(AovIntegrator, TangentsAndIndices) {
   for (int p = 0; p < 25; ++p) EXPECT_EQ(indices[p * 2 + 1], 1) << p;
 }
 
+// duv_dx and duv_dy against the (u, v) the neighbouring pixels see: with
+// every ray through its pixel's centre (a box filter of radius 1e-6), the
+// neighbour's ray meets the plane where that pixel's hit is, and on a
+// plane (u, v) is affine in position, so duv_dx at x is uv(x + 1) - uv(x).
+// A perspective camera (whose steps vary across the image) and a tilted,
+// rotated, unevenly scaled rectangle; off the plane, zeros.
+TEST(AovIntegrator, UvStepsToTheNextPixel) {
+  constexpr int kSize = 7, kChannels = 6;
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='t:uv,x:duv_dx,y:duv_dy'/>"
+      "</integrator><sensor type='perspective'><float name='fov' value='40'/><transform name='to_world'>"
+      "<lookat origin='0.3, -0.5, 3' target='0, 0, 0'/></transform><film type='hdrfilm'><integer name='width' "
+      "value='7'/><integer name='height' value='7'/><rfilter type='box'><float name='radius' value='1e-6'/>"
+      "</rfilter></film></sensor><shape type='rectangle'><transform name='to_world'><scale x='3' y='1.2'/>"
+      "<rotate z='1' angle='25'/><rotate x='1' angle='30'/></transform></shape></scene>");
+  ASSERT_EQ(scene.integrator->channels().size(), size_t(kChannels));
+  EXPECT_EQ(scene.integrator->channels()[2], "x.U");
+  EXPECT_EQ(scene.integrator->channels()[5], "y.V");
+  const auto img = test::render_scene(scene, 1).resolve();
+  const auto at = [&](int x, int y) { return &img[(y * kSize + x) * kChannels]; };
+  int checked = 0;
+  for (int y = 0; y + 1 < kSize; ++y)
+    for (int x = 0; x + 1 < kSize; ++x) {
+      const float *here = at(x, y), *right = at(x + 1, y), *below = at(x, y + 1);
+      const bool hits = here[0] != 0 && right[0] != 0 && below[0] != 0;
+      if (!hits) continue;
+      ++checked;
+      for (int c = 0; c < 2; ++c) {
+        EXPECT_NEAR(here[2 + c], right[c] - here[c], 2e-5f) << x << ", " << y << " x channel " << c;
+        EXPECT_NEAR(here[4 + c], below[c] - here[c], 2e-5f) << x << ", " << y << " y channel " << c;
+      }
+    }
+  EXPECT_GE(checked, 12);
+  // A pixel that misses: zeros.
+  const auto sky = test::scene_from_xml(
+      "<scene version='3.0.0'><integrator type='aov'><string name='aovs' value='x:duv_dx'/></integrator>"
+      "<sensor type='perspective'><film type='hdrfilm'><integer name='width' value='2'/><integer name='height' "
+      "value='2'/></film></sensor></scene>");
+  for (float v : test::render_scene(sky, 1).resolve()) EXPECT_EQ(v, 0.0f);
+}
+
 // A nested path tracer writes its image, prefixed by its name, before the
 // layers: the same image, bit for bit, as path alone with the same seed
 // (the layers draw no numbers).
