@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace caustica {
 namespace {
@@ -17,7 +19,15 @@ class HeaderReader {
   }
 
   uint64_t size() const { return size_; }
+  uint64_t at() const { return at_; }
   uint64_t left() const { return size_ - at_; }
+  bool seek(uint64_t to) {
+    if (to > size_) return false;
+    in_.clear();
+    in_.seekg(std::streamoff(to));
+    at_ = to;
+    return bool(in_);
+  }
   bool read(void* out, uint64_t bytes) {
     if (bytes > left() || !in_.read(static_cast<char*>(out), std::streamsize(bytes))) return false;
     at_ += bytes;
@@ -63,6 +73,7 @@ std::string vdb_header_problem(const std::filesystem::path& file) {
       return cut + "metadata entry " + std::to_string(i + 1) + " claims more bytes than the file holds";
   if (!has_offsets) return "";
   if (!in.value(&count) || count < 0) return cut + "its grid count is missing or negative";
+  std::vector<std::pair<int64_t, int64_t>> grids;  // where each grid's own part and its topology begin
   for (int32_t i = 0; i < count; ++i) {
     int64_t grid = 0, block = 0, end = 0;
     if (!in.sized() || !in.sized() || !in.sized() || !in.value(&grid) || !in.value(&block) || !in.value(&end))
@@ -70,6 +81,30 @@ std::string vdb_header_problem(const std::filesystem::path& file) {
     if (grid < 0 || block < grid || end < block || uint64_t(end) > in.size())
       return cut + "grid " + std::to_string(i + 1) + " ends at byte " + std::to_string(end) + " of a file of " +
              std::to_string(in.size()) + " bytes";
+    grids.emplace_back(grid, block);
+  }
+  // Each grid opens with its compression flags, its own metadata and the
+  // name of its transform's type, all of which must end before its
+  // topology begins: a wrong length there is what OpenVDB would allocate.
+  for (size_t i = 0; i < grids.size(); ++i) {
+    const auto [grid, block] = grids[i];
+    const std::string which = "grid " + std::to_string(i + 1) + "'s ";
+    uint32_t compression = 0;
+    int32_t entries = 0;
+    if (!in.seek(uint64_t(grid)) || !in.value(&compression) || !in.value(&entries) || entries < 0 ||
+        in.at() > uint64_t(block))
+      return cut + which + "metadata count is missing or negative";
+    const auto field = [&](const std::string& what) -> std::string {
+      if (!in.sized()) return cut + which + what + " claims more bytes than the file holds";
+      if (in.at() > uint64_t(block))
+        return cut + which + what + " runs to byte " + std::to_string(in.at()) + ", past the grid's data at byte " +
+               std::to_string(block);
+      return "";
+    };
+    for (int32_t e = 0; e < entries; ++e)
+      for (int part = 0; part < 3; ++part)
+        if (std::string problem = field("metadata entry " + std::to_string(e + 1)); !problem.empty()) return problem;
+    if (std::string problem = field("transform type"); !problem.empty()) return problem;
   }
   return "";
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -204,6 +205,37 @@ TEST(VdbVolume, AFileCutShortIsRefusedBeforeOpenVdbReadsIt) {
   }
   EXPECT_THAT(volume_error(cut), HasSubstr("grid 1 ends at byte " + std::to_string(bytes.size()) + " of a file of " +
                                            std::to_string(bytes.size() - 1) + " bytes"));
+}
+
+// Lengths inside a grid that are wrong but within the file: the grid's
+// metadata entries and its transform's type name are checked against
+// where its topology begins (OpenVDB would allocate what they claim).
+// Each length is found by the string it prefixes.
+TEST(VdbVolume, WrongLengthsInsideAGridAreRefusedByName) {
+  const auto whole = ramp_file();
+  std::ifstream in(whole, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto bad = temp_file("corrupt.vdb");
+  const auto corrupted = [&](size_t at, uint32_t length = 0x7ffffff0u) {
+    std::string copy = bytes;
+    std::memcpy(&copy[at], &length, sizeof length);
+    std::ofstream(bad, std::ios::binary).write(copy.data(), std::streamsize(copy.size()));
+    return volume_error(bad);
+  };
+  // The grid's own metadata ("file_bbox_max" is one of OpenVDB's entries).
+  const size_t entry = bytes.find("file_bbox_max");
+  ASSERT_NE(entry, std::string::npos);
+  EXPECT_THAT(corrupted(entry - 4), HasSubstr("corrupt.vdb: is cut short or corrupt: grid 1's metadata entry "));
+  EXPECT_THAT(corrupted(entry - 4), HasSubstr(" claims more bytes than the file holds"));
+  // A length that ends 50 bytes before the file does: within the file, but
+  // past where the grid's leaf data begins (its last 414 bytes here).
+  EXPECT_THAT(corrupted(entry - 4, uint32_t(bytes.size() - entry - 50)),
+              HasSubstr("runs to byte " + std::to_string(bytes.size() - 50) + ", past the grid's data at byte "));
+  const size_t map = bytes.find("UniformScaleTranslateMap");
+  ASSERT_NE(map, std::string::npos);
+  EXPECT_THAT(corrupted(map - 4),
+              HasSubstr("corrupt.vdb: is cut short or corrupt: grid 1's transform type claims more bytes than the "
+                        "file holds"));
 }
 
 #else
