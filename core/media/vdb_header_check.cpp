@@ -87,7 +87,7 @@ std::string vdb_header_problem(const std::filesystem::path& file) {
   // name of its transform's type, all of which must end before its
   // topology begins: a wrong length there is what OpenVDB would allocate.
   for (size_t i = 0; i < grids.size(); ++i) {
-    const auto [grid, block] = grids[i];
+    const int64_t grid = grids[i].first, block = grids[i].second;
     const std::string which = "grid " + std::to_string(i + 1) + "'s ";
     uint32_t compression = 0;
     int32_t entries = 0;
