@@ -34,7 +34,7 @@ struct WalkCost {
 // mean of passes 1..k, less that mean's variance. Both are weighed by the
 // mean of passes 1..k. Heavy tails make the figures noisy, and a pass of
 // few samples misses more of its tail, so the first passes judged
-// understate guided variance (docs/bench/guiding.md).
+// understate guided variance (docs/integrators.md, "Only where it pays").
 class GuidingPayoff {
  public:
   static constexpr uint32_t kFirstJudged = 2;
