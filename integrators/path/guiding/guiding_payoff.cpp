@@ -31,18 +31,16 @@ void GuidingPayoff::begin_pass(uint32_t pass) {
       if (pass_ > 0 && pass > pass_) px.earlier[c] += px.sum[c];
       px.sum[c] = px.squares[c] = 0;
     }
+  for (Pixel& px : pixels_) px.samples = px.vertices = px.guided = 0;
   pass_ = pass;
-  samples_ = 0;
-  vertices_ = 0;
-  guided_ = 0;
 }
 
 void GuidingPayoff::add(Vec2i pixel, const Color& L, const WalkCost& cost) {
-  samples_.fetch_add(1, std::memory_order_relaxed);
-  vertices_.fetch_add(cost.vertices, std::memory_order_relaxed);
-  guided_.fetch_add(cost.guided, std::memory_order_relaxed);
   Pixel* px = tracked(pixel);
   if (!px) return;
+  ++px->samples;
+  px->vertices += cost.vertices;
+  px->guided += cost.guided;
   for (int c = 0; c < 3; ++c) {
     if (pass_ == 0) px->first[c] = L[c];
     px->sum[c] += L[c];
@@ -68,8 +66,14 @@ GuidingPayoff::Verdict GuidingPayoff::judge() const {
 }
 
 double GuidingPayoff::cost_per_sample() const {
-  if (samples_ == 0) return 0;
-  return (double(vertices_) + kGuidedVertexExtra * double(guided_)) / double(samples_);
+  uint64_t samples = 0, vertices = 0, guided = 0;
+  for (const Pixel& px : pixels_) {
+    samples += px.samples;
+    vertices += px.vertices;
+    guided += px.guided;
+  }
+  if (samples == 0) return 0;
+  return (double(vertices) + kGuidedVertexExtra * double(guided)) / double(samples);
 }
 
 }  // namespace caustica

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -49,7 +48,9 @@ class GuidingPayoff {
   // Before the samples of training pass `pass` (passes come in order).
   void begin_pass(uint32_t pass);
   // One sample of the current pass and what its walk cost. Safe from many
-  // threads as long as each pixel's samples come from one thread, in order.
+  // threads as long as each pixel's samples come from one thread, in order:
+  // only the tracked pixels keep anything, their cost included, so no two
+  // threads write one place.
   void add(Vec2i pixel, const Color& L, const WalkCost& cost);
 
   // Relative variance and cost per sample of pass 0 and of the last.
@@ -67,6 +68,8 @@ class GuidingPayoff {
     double earlier[3];  // the sum of passes 1 .. k-1
     double sum[3];      // the current pass's sum
     double squares[3];  // and sum of squares
+    // The current pass's samples and what their walks cost.
+    uint64_t samples, vertices, guided;
   };
   Pixel* tracked(Vec2i p);
   double cost_per_sample() const;
@@ -75,7 +78,6 @@ class GuidingPayoff {
   int columns_;
   std::vector<Pixel> pixels_;
   uint32_t pass_ = 0;
-  std::atomic<uint64_t> samples_{0}, vertices_{0}, guided_{0};
   double pass0_cost_ = 0;
 };
 
