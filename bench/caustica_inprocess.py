@@ -38,20 +38,20 @@ class InProcessCaustica:
 
     def render(self, scene, output, *, integrator, spp, seed, res, options=()):
         """As Caustica.render: the scene takes `independent` unless the integrator names a sampler after '@';
-        options may be --spectral on|off|auto."""
+        options may be --spectral on|off|auto and --light-selection tree|power|auto."""
         name, _, sampler = integrator.partition("@")
         defines = {"res": str(res), "sampler": sampler or "independent"}
         if sampler:
             defines["spp"] = str(spp)
         options = list(map(str, options))
-        spectral = "auto"
-        if options[:1] == ["--spectral"] and len(options) == 2:
-            spectral = options[1]
-        elif options:
-            raise ValueError(f"the in-process runner takes only --spectral, not {options}")
+        settings = {"--spectral": "auto", "--light-selection": "auto"}
+        if len(options) % 2 or any(flag not in settings for flag in options[::2]):
+            raise ValueError(f"the in-process runner takes only --spectral and --light-selection, not {options}")
+        settings.update(zip(options[::2], options[1::2]))
         try:
             result = self.caustica.render(self._scene(scene, defines), integrator=name, spp=spp, seed=seed,
-                                          threads=self.threads, spectral=spectral)
+                                          threads=self.threads, spectral=settings["--spectral"],
+                                          light_selection=settings["--light-selection"])
         except ValueError as error:
             if "unknown integrator" in str(error):
                 raise UnknownIntegrator(str(error)) from error

@@ -37,8 +37,11 @@ def is_complete(chunk, *, scene, integrator, spp, res):
 
 
 def make_reference(caustica, scene, output, *, spp, chunk_spp, res, integrator=REFERENCE_INTEGRATOR,
-                   log=print):
-    """Renders the missing chunks of `output` and merges them; returns its metadata."""
+                   options=(), log=print):
+    """Renders the missing chunks of `output` and merges them; returns its metadata.
+
+    `options` go to every chunk's render; a chunk on disk is not checked for them, so a reference made with
+    other options needs an output of its own."""
     output = Path(output)
     chunks_dir = output.with_suffix(".chunks")
     chunks_dir.mkdir(parents=True, exist_ok=True)
@@ -48,7 +51,8 @@ def make_reference(caustica, scene, output, *, spp, chunk_spp, res, integrator=R
         if is_complete(chunk, scene=scene, integrator=integrator, spp=count, res=res):
             continue
         log(f"  reference {output.name}: chunk {k + 1} of {len(chunks)}, {count} spp")
-        caustica.render(scene, chunk, integrator=integrator, spp=count, seed=REFERENCE_SEED_BASE + k, res=res)
+        caustica.render(scene, chunk, integrator=integrator, spp=count, seed=REFERENCE_SEED_BASE + k, res=res,
+                        options=options)
     metadata = caustica.merge(chunks, output)
     log(f"  reference {output.name}: {metadata['spp']} spp, estimated relMSE {metadata.get('estimated_rel_mse')}")
     return metadata

@@ -110,7 +110,8 @@ PyScene load_text(const std::string& xml, const Defines& defines, const std::str
 }
 
 PyResult render_scene(const PyScene& scene, const std::string& integrator, uint32_t spp, uint64_t first_sample,
-                      double time, uint64_t seed, int threads, const std::string& spectral, bool raw_sums) {
+                      double time, uint64_t seed, int threads, const std::string& spectral, bool raw_sums,
+                      const std::string& light_selection) {
   RenderSettings settings;
   settings.integrator = integrator;
   settings.spp = spp;
@@ -124,6 +125,12 @@ PyResult render_scene(const PyScene& scene, const std::string& integrator, uint3
     settings.transport = RenderSettings::Transport::Rgb;
   else if (spectral != "auto")
     throw py::value_error("spectral must be 'on', 'off' or 'auto', not '" + spectral + "'");
+  if (light_selection == "tree")
+    settings.light_selection = RenderSettings::LightSelection::Tree;
+  else if (light_selection == "power")
+    settings.light_selection = RenderSettings::LightSelection::Power;
+  else if (light_selection != "auto")
+    throw py::value_error("light_selection must be 'tree', 'power' or 'auto', not '" + light_selection + "'");
   std::atomic<bool> stop{false};
   settings.stop = &stop;
   Image image;
@@ -310,7 +317,7 @@ PYBIND11_MODULE(caustica, m) {
         "Loads a scene from XML text; name stands for the file in messages.");
   m.def("render", &render_scene, py::arg("scene"), py::kw_only(), py::arg("integrator") = "", py::arg("spp") = 0,
         py::arg("first_sample") = 0, py::arg("time") = 0.0, py::arg("seed") = 0, py::arg("threads") = 0,
-        py::arg("spectral") = "auto", py::arg("raw_sums") = false,
+        py::arg("spectral") = "auto", py::arg("raw_sums") = false, py::arg("light_selection") = "auto",
         "Renders as `caustica render` does; returns beauty, layers and metadata.");
   m.def("read", &read_result, py::arg("path"), "Reads a render's EXR as a result.");
   m.def("merge", &merge, py::arg("parts"),

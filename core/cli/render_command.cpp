@@ -49,6 +49,11 @@ void RenderCommand::add_to(CLI::App& app) {
       ->add_option("--spectral", spectral_,
                    "on: paths carry wavelengths; off: RGB; auto: as the scene needs (default: auto)")
       ->check(CLI::IsMember({"on", "off", "auto"}));
+  command_
+      ->add_option("--light-selection", light_selection_,
+                   "how a lit point chooses its light: tree (near and bright lights first), power, or auto: the "
+                   "tree where it holds two emitters or more (default: auto)")
+      ->check(CLI::IsMember({"tree", "power", "auto"}));
   command_->add_option("--debug-pixel", debug_pixel_, "replay one sample of pixel X,Y and print it");
   command_->add_option("--debug-sample", debug_sample_, "the sample index --debug-pixel replays")
       ->check(whole_number_up_to(kMaxFirstSample, "2^62"));
@@ -129,6 +134,9 @@ int RenderCommand::render(const RankSession* session) const {
   settings.transport = spectral_ == "on"    ? RenderSettings::Transport::Spectral
                        : spectral_ == "off" ? RenderSettings::Transport::Rgb
                                             : RenderSettings::Transport::AsTheSceneNeeds;
+  settings.light_selection = light_selection_ == "tree"    ? RenderSettings::LightSelection::Tree
+                             : light_selection_ == "power" ? RenderSettings::LightSelection::Power
+                                                           : RenderSettings::LightSelection::AsTheSceneNeeds;
   // The ranks on one machine share its cores.
   settings.threads = threads_ > 0 || !session
                          ? threads_

@@ -28,7 +28,7 @@ class RenderCommand {
                        const std::filesystem::path& exr) const;
 
   CLI::App* command_ = nullptr;
-  std::string scene_, output_, integrator_, debug_pixel_, exr_format_, spectral_ = "auto";
+  std::string scene_, output_, integrator_, debug_pixel_, exr_format_, spectral_ = "auto", light_selection_ = "auto";
   std::vector<std::string> defines_;
   uint32_t spp_ = 0;
   double time_ = 0, rank_timeout_ = 120;

@@ -27,6 +27,11 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
     force_spectral(f, settings_.transport == RenderSettings::Transport::Spectral);
     scene_->set_features(std::move(f));
   }
+  if (settings_.light_selection != RenderSettings::LightSelection::AsTheSceneNeeds) {
+    SceneFeatures f = scene_->features();
+    force_light_tree(f, settings_.light_selection == RenderSettings::LightSelection::Tree);
+    scene_->set_features(std::move(f));
+  }
   integrator_->check_scene(*scene_);
 }
 

@@ -34,6 +34,10 @@ struct RenderSettings {
   // Spectral or RGB transport: as the scene analysis decides, or forced
   // (which rewrites the loaded scene's analysis, for every job sharing it).
   enum class Transport { AsTheSceneNeeds, Rgb, Spectral } transport = Transport::AsTheSceneNeeds;
+  // How points to be lit choose their light: as the scene analysis decides
+  // (the light tree for two emitters or more it can bound), or forced, as
+  // transport is.
+  enum class LightSelection { AsTheSceneNeeds, Power, Tree } light_selection = LightSelection::AsTheSceneNeeds;
   const std::atomic<bool>* stop = nullptr;
 };
 

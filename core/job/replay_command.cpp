@@ -29,6 +29,8 @@ std::string replay_command(const std::string& scene, const std::vector<std::stri
   command += " --seed " + std::to_string(settings.seed);
   if (settings.transport == RenderSettings::Transport::Spectral) command += " --spectral on";
   if (settings.transport == RenderSettings::Transport::Rgb) command += " --spectral off";
+  if (settings.light_selection == RenderSettings::LightSelection::Tree) command += " --light-selection tree";
+  if (settings.light_selection == RenderSettings::LightSelection::Power) command += " --light-selection power";
   return command + " --debug-pixel " + std::to_string(id.pixel.x) + "," + std::to_string(id.pixel.y) +
          " --debug-sample " + std::to_string(id.index);
 }

@@ -8,6 +8,7 @@
 #include "core/geometry/bounds.h"
 #include "core/geometry/interaction.h"
 #include "core/geometry/reference_point.h"
+#include "core/lights/light_bounds.h"
 #include "core/math/color.h"
 #include "core/math/sampled_spectrum.h"
 #include "core/registry/plugin.h"
@@ -84,6 +85,10 @@ class Emitter : public Plugin {
   virtual std::optional<LeSample> sample_Le(Vec2 u_pos, Vec2 u_dir, float time = 0) const = 0;
   virtual void pdf_Le(const Ray& ray, Vec3 n, float* pdf_pos, float* pdf_dir) const = 0;
   virtual Color power() const = 0;
+  // Where the emitter is and which way it shines, for the light tree;
+  // none for lights that are everywhere (the environment, directional
+  // lights) or that move, which the tree leaves to the power-based choice.
+  virtual std::optional<LightBounds> light_bounds() const { return std::nullopt; }
 
   virtual bool is_delta() const { return false; }
   virtual bool is_infinite() const { return false; }

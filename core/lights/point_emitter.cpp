@@ -40,6 +40,12 @@ class PointEmitter final : public Emitter {
   }
 
   Color power() const override { return intensity_ * (4 * kPi); }
+  std::optional<LightBounds> light_bounds() const override {
+    LightBounds b;
+    b.bounds.expand(position_);
+    b.phi = power().average();
+    return b;
+  }
   bool is_delta() const override { return true; }
 
  private:

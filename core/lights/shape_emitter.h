@@ -5,6 +5,7 @@
 #include "core/errors/scene_error.h"
 #include "core/lights/emitter.h"
 #include "core/registry/properties.h"
+#include "core/shapes/shape.h"
 #include "core/texture/texture.h"
 #include "core/texture/texture_parameter.h"
 
@@ -27,6 +28,14 @@ class ShapeEmitter : public Emitter {
     shape_ = shape;
   }
   bool is_area() const final { return true; }
+  // Every direction: a shape's emitting normals are not bounded tighter.
+  std::optional<LightBounds> light_bounds() const final {
+    if (!shape_ || shape_->moves()) return std::nullopt;
+    LightBounds b;
+    b.bounds = shape_->bounds();
+    b.phi = power().average();
+    return b;
+  }
 
  protected:
   std::shared_ptr<Texture> radiance_;

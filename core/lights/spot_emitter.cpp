@@ -75,6 +75,24 @@ class SpotEmitter final : public Emitter {
     return (texture_ ? intensity_ * texture_->mean() : intensity_) * float(solid);
   }
   bool is_delta() const override { return true; }
+  // Its cone, widened by a thousandth of a radian against rounding, where
+  // to_world keeps angles; a transform that shears or scales unevenly
+  // bends the cone, and the bounds then take every direction.
+  std::optional<LightBounds> light_bounds() const override {
+    LightBounds b;
+    b.bounds.expand(position_);
+    b.phi = power().average();
+    const Vec3 x = to_world_.vector({1, 0, 0}), y = to_world_.vector({0, 1, 0}), z = to_world_.vector({0, 0, 1});
+    const float s = length(z);
+    const auto near = [&](float a, float e) { return std::abs(a - e) <= 1e-4f * s * s; };
+    if (near(dot(x, x), s * s) && near(dot(y, y), s * s) && near(dot(x, y), 0) && near(dot(x, z), 0) &&
+        near(dot(y, z), 0) && cutoff_ + 1e-3f < kPi) {
+      b.axis = z / s;
+      b.cos_theta_o = std::cos(cutoff_ + 1e-3f);
+      b.cos_theta_e = 1;
+    }
+    return b;
+  }
 
  private:
   // The intensity sent along the world direction d.

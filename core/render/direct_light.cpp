@@ -6,7 +6,8 @@
 namespace caustica {
 
 std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint& ref, float u_select, Vec2 u_light) {
-  const auto choice = scene.light_selection().sample(u_select);
+  const LightSelection& lights = scene.light_selection();
+  const auto choice = scene.features().light_tree ? lights.sample(u_select, ref) : lights.sample(u_select);
   if (!choice) return std::nullopt;
   const auto ls = choice->emitter->sample_Li(ref, u_light);
   if (!ls || ls->pdf <= 0 || ls->Li.is_black()) return std::nullopt;
@@ -29,7 +30,9 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,
                              float bsdf_pdf, const SurfaceInteraction& on_light, float n_light, float n_bsdf) {
-  const float pdf_light = scene.light_selection().pmf(&emitter) * emitter.pdf_Li(from, wi, on_light);
+  const LightSelection& lights = scene.light_selection();
+  const float pmf = scene.features().light_tree ? lights.pmf(&emitter, from) : lights.pmf(&emitter);
+  const float pdf_light = pmf * emitter.pdf_Li(from, wi, on_light);
   return power_heuristic(n_bsdf, bsdf_pdf, n_light, pdf_light);
 }
 

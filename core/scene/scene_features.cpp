@@ -186,7 +186,17 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
       if (s->bsdf() && !s->bsdf()->renders_spectral()) rgb_only.insert(s->bsdf()->plugin_name());
   f.rgb_only_materials.assign(rgb_only.begin(), rgb_only.end());
   decide_spectral(scene, spectra, f);
+  const size_t tree_lights = scene.light_selection().tree_lights();
+  f.light_tree = tree_lights >= 2;
+  f.light_selection_reason = f.light_tree ? std::to_string(tree_lights) + " emitters it can bound"
+                                          : "fewer than two emitters a light tree could bound, so the choice would "
+                                            "not depend on the point";
   return f;
+}
+
+void force_light_tree(SceneFeatures& f, bool tree, const std::string& why) {
+  f.light_tree = tree;
+  f.light_selection_reason = why;
 }
 
 void force_spectral(SceneFeatures& f, bool spectral, const std::string& why) {
@@ -222,7 +232,9 @@ std::string describe(const SceneFeatures& f) {
   } else {
     out << "none (nothing moves; no time is drawn)";
   }
-  out << "\n" << describe_transport(f) << "\n";
+  out << "\n"
+      << describe_transport(f) << "\nlight selection: " << (f.light_tree ? "light tree (" : "by power (")
+      << f.light_selection_reason << ")\n";
   return out.str();
 }
 

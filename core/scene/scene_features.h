@@ -47,6 +47,11 @@ struct SceneFeatures {
   bool spectral = false;
   std::string spectral_reason;
   std::vector<std::string> rgb_only_materials;
+  // How a point to be lit chooses its light: through the light tree where
+  // the tree holds two emitters or more (only then does the choice depend
+  // on the point), by power otherwise; and why.
+  bool light_tree = false;
+  std::string light_selection_reason;
 };
 
 // A colour the scene file gave as a spectrum, for the analysis to weigh.
@@ -74,6 +79,9 @@ SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector
 // decides, in place of the analysis's choice.
 void force_spectral(SceneFeatures& f, bool spectral, const std::string& why = "forced by the render settings");
 
+// The light tree or the choice by power, as a render setting decides, in
+// place of the analysis's choice.
+void force_light_tree(SceneFeatures& f, bool tree, const std::string& why = "forced by the render settings");
 // A few lines for `caustica info`.
 std::string describe(const SceneFeatures& features);
 // Its line on the transport mode, and whether a render's log should print

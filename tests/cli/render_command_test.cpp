@@ -114,6 +114,27 @@ TEST(RenderCommand, ErrorsNameTheProblem) {
   EXPECT_THAT(run_caustica("render " + kCornell + " --debug-pixel 9999,1").output,
               HasSubstr("--debug-pixel expects X,Y"));
   EXPECT_NE(run_caustica("render /nonexistent.xml").status, 0);
+  EXPECT_THAT(run_caustica("render " + kCornell + " --light-selection nearest").output,
+              HasSubstr("--light-selection: nearest not in {tree,power,auto}"));
+}
+
+// --light-selection reaches the render: on the hall of lamps the tree and
+// the choice by power draw different lights, so their images differ, and
+// each repeats itself.
+TEST(RenderCommand, LightSelectionDecidesTheLightsDrawn) {
+  const std::string hall = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/many-lights.xml";
+  const auto render = [&](const std::string& selection) {
+    const auto exr = temp_dir() / ("hall-" + selection + ".exr");
+    const test::CommandResult r = run_caustica("render " + hall + " -o " + exr.string() +
+                                               " --spp 2 -D res=8 --threads 1 -q --light-selection " + selection);
+    EXPECT_EQ(r.status, 0) << r.output;
+    std::vector<float> pixels(8 * 8 * 3);
+    auto in = OIIO::ImageInput::open(exr.string());
+    EXPECT_TRUE(in && in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data()));
+    return pixels;
+  };
+  EXPECT_EQ(render("auto"), render("tree"));
+  EXPECT_NE(render("tree"), render("power"));
 }
 
 TEST(RenderCommand, DevelopmentOptions) {

@@ -92,6 +92,19 @@ def test_bad_render_options_raise_the_command_lines_message(option, kwargs):
     assert message in cli.stderr, (message, cli.stderr)
 
 
+def test_light_selection_matches_the_command_line(tmp_path):
+    hall = ROOT / "scenes" / "many-lights.xml"
+    scene = caustica.load(hall, defines={"res": "8"})
+    for selection in ("power", "tree"):
+        exr = tmp_path / f"{selection}.exr"
+        subprocess.run([os.environ["CAUSTICA_BINARY"], "render", str(hall), "-o", str(exr), "--spp", "2", "--seed", "1",
+                        "--exr-format", "float", "-D", "res=8", "--quiet", "--light-selection", selection], check=True)
+        result = caustica.render(scene, spp=2, seed=1, light_selection=selection)
+        assert caustica.compare(result, str(exr))["mse"] == 0
+    with pytest.raises(ValueError, match="light_selection must be 'tree', 'power' or 'auto', not 'nearest'"):
+        caustica.render(scene, spp=1, light_selection="nearest")
+
+
 def test_compare_refuses_a_display_image(tmp_path):
     scene = caustica.load(BOX, defines={"res": "4"})
     png = tmp_path / "display.png"

@@ -64,5 +64,25 @@ TEST(SceneFeatures, DescribedForInfo) {
   EXPECT_THAT(text, HasSubstr("caustic paths: possible ("));
 }
 
+// The light tree where the choice can depend on the point: two emitters
+// or more that it can bound.
+TEST(SceneFeatures, LightTreeForTwoBoundedEmittersOrMore) {
+  EXPECT_FALSE(cornell("cornell-box")->features().light_tree);
+  EXPECT_THAT(describe(cornell("cornell-box")->features()),
+              HasSubstr("light selection: by power (fewer than two emitters a light tree could bound, so the choice "
+                        "would not depend on the point)\n"));
+  const auto hall = cornell("many-lights");
+  EXPECT_TRUE(hall->features().light_tree);
+  EXPECT_THAT(describe(hall->features()), HasSubstr("light selection: light tree (124 emitters it can bound)\n"));
+  // An environment and one point light: only one emitter in the tree.
+  const auto one = test::scene_from_xml(
+      "<scene version='3.0.0'><emitter type='constant'/><emitter type='point'><point name='position' x='0' y='1' "
+      "z='0'/></emitter></scene>");
+  EXPECT_FALSE(one->features().light_tree);
+  SceneFeatures forced = one->features();
+  force_light_tree(forced, true);
+  EXPECT_THAT(describe(forced), HasSubstr("light selection: light tree (forced by the render settings)\n"));
+}
+
 }  // namespace
 }  // namespace caustica
