@@ -353,6 +353,7 @@ class Instantiator {
       // unless it bounds media: then it is the media's index-matched boundary.
       bsdf = Registry::instance().create_default<Bsdf>("bsdf", shape->bounds_media() ? "null" : "diffuse", node.where);
     }
+    if (const std::string why = shape->refused_material(*bsdf); !why.empty()) throw SceneError(node.where, why);
     shape->set_bsdf(bsdf);
     if (auto emitter = props.child<Emitter>("emitter")) {
       try {

@@ -47,7 +47,11 @@ std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  const RayHit hit{rayhit.ray.tfar, rayhit.hit.primID, rayhit.hit.geomID, {rayhit.hit.u, rayhit.hit.v}};
+  const RayHit hit{rayhit.ray.tfar,
+                   rayhit.hit.primID,
+                   rayhit.hit.geomID,
+                   {rayhit.hit.u, rayhit.hit.v},
+                   {rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z}};
   // Within an instance, geomID names the geometry in its group.
   const unsigned top = rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayhit.hit.instID[0] : rayhit.hit.geomID;
   SurfaceInteraction si = by_geom_id_[top]->interaction(ray, hit);

@@ -32,6 +32,7 @@ struct RayHit {
   unsigned prim = 0;
   unsigned geom = 0;  // the geometry hit within an instance's group
   Vec2 uv;            // Embree's barycentrics for triangles, shape-defined otherwise
+  Vec3 ng;            // Embree's geometric normal, not normalised (within an instance, in its group's space)
 };
 
 // A surface in the scene: Embree geometry plus what lights and integrators
@@ -70,6 +71,9 @@ class Shape : public Plugin {
   // name: itself, or a csg solid's operands.
   virtual std::vector<const Shape*> material_surfaces() const { return {this}; }
   virtual void line_crossings(const Ray& line, std::vector<BoundaryCrossing>& out) const;
+  // Why the shape cannot show `bsdf` (a curve, seen only from outside, and
+  // a material that transmits); empty where it can.
+  virtual std::string refused_material(const Bsdf&) const { return ""; }
   // A null surface, which scatters nothing (a medium's index-matched
   // boundary): paths and the first-hit layers look through it.
   bool is_null() const;

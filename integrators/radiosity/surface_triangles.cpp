@@ -35,11 +35,11 @@ void add_mesh(std::vector<SurfaceTriangle>& out, const TriangleMesh& mesh) {
     SurfaceTriangle t;
     t.shape = &mesh;
     for (int k = 0; k < 3; ++k) {
-      const SurfaceInteraction si = mesh.interaction(Ray{}, RayHit{0, unsigned(prim), 0, corners[k]});
+      const SurfaceInteraction si = mesh.interaction(Ray{}, RayHit{0, unsigned(prim), 0, corners[k], {}});
       t.p[k] = si.p;
       t.uv[k] = si.uv;
     }
-    const Vec3 front = mesh.interaction(Ray{}, RayHit{0, unsigned(prim), 0, {1 / 3.0f, 1 / 3.0f}}).ng;
+    const Vec3 front = mesh.interaction(Ray{}, RayHit{0, unsigned(prim), 0, {1 / 3.0f, 1 / 3.0f}, {}}).ng;
     add_if_flat(out, t, front);
   }
 }
@@ -69,6 +69,8 @@ void check_radiosity_scene(const Scene& scene) {
   for (const auto& shape : scene.shapes()) {
     if (shape->kind() == "csg")
       throw std::invalid_argument(what + shape_name(scene, *shape) + " is a csg solid, which it cannot mesh" + instead);
+    if (shape->kind() == "linearcurve" || shape->kind() == "bsplinecurve")
+      throw std::invalid_argument(what + shape_name(scene, *shape) + " is a curve, which it cannot mesh" + instead);
     if (shape->is_instance() || shape->is_group())
       throw std::invalid_argument(what + shape_name(scene, *shape) + " is an instance, which it cannot mesh yet" +
                                   instead);
