@@ -67,6 +67,7 @@ class DiskShape final : public AnalyticShape {
   }
 
   std::string kind() const override { return "disk"; }
+  std::optional<Vec3> flat_normal() const override { return normal_; }
 
  private:
   SurfaceInteraction at_local(Vec2 xy, float t) const {

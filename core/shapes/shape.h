@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,10 @@ class Shape : public Plugin {
   // name: itself, or a csg solid's operands.
   virtual std::vector<const Shape*> material_surfaces() const { return {this}; }
   virtual void line_crossings(const Ray& line, std::vector<BoundaryCrossing>& out) const;
+  // The geometric normal every point of the shape shares, where it has one
+  // (a rectangle, a disk, any flat mesh): a light tree bounds an area
+  // light on the shape by the half-space in front of it.
+  virtual std::optional<Vec3> flat_normal() const { return std::nullopt; }
   // Why the shape cannot show `bsdf` (a curve, seen only from outside, and
   // a material that transmits); empty where it can.
   virtual std::string refused_material(const Bsdf&) const { return ""; }

@@ -57,6 +57,26 @@ TriangleMesh::TriangleMesh(MeshData mesh, const Transform& to_world, bool flip_n
   }
   // A mesh of only degenerate triangles can still be hit-tested, but not sampled.
   if (area_ > 0) area_distribution_.emplace(areas);
+  flat_normal_ = shared_normal();
+}
+
+// The normal interaction() gives every triangle, where all agree to within
+// 1.5e-3 radians and no vertex normal would turn it over.
+std::optional<Vec3> TriangleMesh::shared_normal() const {
+  std::optional<Vec3> shared;
+  for (size_t i = 0; i < mesh_.indices.size(); i += 3) {
+    const Vec3 p0 = mesh_.positions[mesh_.indices[i]], p1 = mesh_.positions[mesh_.indices[i + 1]],
+               p2 = mesh_.positions[mesh_.indices[i + 2]];
+    const Vec3 c = cross(p1 - p0, p2 - p0);
+    if (!(dot(c, c) > 0)) continue;
+    const Vec3 n = normalize(flip_normals_ ? -c : c);
+    if (!shared) shared = n;
+    if (!(dot(n, *shared) > 1 - 1e-6f)) return std::nullopt;
+  }
+  if (!shared) return std::nullopt;
+  for (const Vec3& vn : mesh_.normals)
+    if (!(dot(flip_normals_ ? -vn : vn, *shared) > 0)) return std::nullopt;
+  return shared;
 }
 
 unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {

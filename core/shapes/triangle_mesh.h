@@ -42,6 +42,7 @@ class TriangleMesh : public Shape {
   const MeshData& data() const { return mesh_; }
   // Triangles with an area in the mesh's own space and none once stored.
   size_t collapsed_triangles() const { return collapsed_; }
+  std::optional<Vec3> flat_normal() const override { return flat_normal_; }
 
  private:
   // A point at barycentrics (b1, b2) of a triangle: position and its
@@ -57,6 +58,7 @@ class TriangleMesh : public Shape {
     Float4 p0, p1, p2;
   };
   Corners corners(unsigned prim) const;
+  std::optional<Vec3> shared_normal() const;
   SurfacePoint point_at(const Corners& c, float b1, float b2) const;
 
   MeshData mesh_;
@@ -65,6 +67,7 @@ class TriangleMesh : public Shape {
   float area_ = 0;
   size_t collapsed_ = 0;
   std::optional<DiscreteDistribution> area_distribution_;
+  std::optional<Vec3> flat_normal_;
 };
 
 // The parameters of TriangleMesh, for plugins to list with their own.

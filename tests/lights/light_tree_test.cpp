@@ -197,6 +197,34 @@ TEST(LightBounds, MergedConeHoldsBothCones) {
   }
 }
 
+// Rectangles and disks light only the half-space their normal faces, and
+// the tree knows it: above two panels facing down, only the sphere light
+// is chosen; below them, all three are. A cube has no single normal.
+TEST(LightSelection, FlatLightsAreNotChosenFromBehind) {
+  const auto panel = [](const std::string& type, float x) {
+    return "<shape type='" + type +
+           "'><transform name='to_world'><scale value='0.5'/><rotate x='1' angle='90'/>"
+           "<translate x='" +
+           std::to_string(x) +
+           "' y='2'/></transform><emitter type='area'><rgb name='radiance' "
+           "value='5'/></emitter></shape>";
+  };
+  const auto scene = test::scene_from_xml(
+      "<scene version='3.0.0'>" + panel("rectangle", 0) + panel("disk", 3) +
+      "<shape type='sphere'><point name='center' x='-3' y='2' z='0'/><float name='radius' value='0.2'/>"
+      "<emitter type='area'><rgb name='radiance' value='4'/></emitter></shape></scene>");
+  const LightSelection& selection = scene->light_selection();
+  for (const auto& s : scene->shapes()) EXPECT_EQ(s->flat_normal().has_value(), s->kind() != "sphere") << s->kind();
+  const ReferencePoint above{{1, 4, 0}, {}, {0, 1, 0}, 0}, below{{1, 0, 0}, {}, {0, 1, 0}, 0};
+  for (const auto& e : scene->emitters()) {
+    const bool sphere = e->light_bounds()->cos_theta_o <= -1;
+    EXPECT_EQ(selection.pmf(e.get(), above) > 0, sphere);
+    EXPECT_GT(selection.pmf(e.get(), below), 0);
+  }
+  const auto cube = test::scene_from_xml("<scene version='3.0.0'><shape type='cube'/></scene>");
+  EXPECT_FALSE(cube->shapes().front()->flat_normal());
+}
+
 // Through the scene: an environment and a directional light (which the
 // tree cannot bound) share 2/3 of the choice by power, the area and point
 // lights the rest through the tree.
