@@ -52,8 +52,10 @@ LightBounds LightBounds::merge(const LightBounds& a, const LightBounds& b) {
 }
 
 float light_importance(const LightBounds& b, Vec3 p, Vec3 n) {
-  const Vec3 c = b.bounds.center();
-  const float r = length(b.bounds.hi - b.bounds.lo) / 2;
+  return light_importance(b, b.bounds.center(), bounding_radius(b.bounds), p, n);
+}
+
+float light_importance(const LightBounds& b, Vec3 c, float r, Vec3 p, Vec3 n) {
   const Vec3 v = p - c;
   const float d2 = dot(v, v);
   if (d2 <= r * r) return b.phi / std::max(r * r, 1e-20f);

@@ -27,5 +27,10 @@ struct LightBounds {
 // where no emitter of the group can light p: where every emitting
 // direction toward p lies beyond theta_o + theta_e.
 float light_importance(const LightBounds& b, Vec3 p, Vec3 n);
+// The same, given the centre and radius of b's bounding sphere (what a
+// light tree keeps per node rather than recompute at every point).
+float light_importance(const LightBounds& b, Vec3 centre, float radius, Vec3 p, Vec3 n);
+// The bounding sphere's radius: half the box's diagonal.
+inline float bounding_radius(const Bounds3& b) { return length(b.hi - b.lo) / 2; }
 
 }  // namespace caustica

@@ -43,8 +43,8 @@ uint32_t LightTree::build(std::vector<uint32_t>::iterator begin, std::vector<uin
   const auto index = uint32_t(nodes_.size());
   nodes_.emplace_back();
   if (end - begin == 1) {
-    nodes_[index].bounds = lights[*begin];
     nodes_[index].light = *begin;
+    set_bounds(nodes_[index], lights[*begin]);
     return index;
   }
   Bounds3 centres;
@@ -59,13 +59,21 @@ uint32_t LightTree::build(std::vector<uint32_t>::iterator begin, std::vector<uin
   build(begin, middle, lights);
   const uint32_t second = build(middle, end, lights);
   nodes_[index].second = second;
-  nodes_[index].bounds = LightBounds::merge(nodes_[index + 1].bounds, nodes_[second].bounds);
+  set_bounds(nodes_[index], LightBounds::merge(nodes_[index + 1].bounds, nodes_[second].bounds));
   return index;
 }
 
+void LightTree::set_bounds(Node& node, const LightBounds& bounds) {
+  node.bounds = bounds;
+  node.centre = bounds.bounds.center();
+  node.radius = bounding_radius(bounds.bounds);
+}
+
 float LightTree::first_child_probability(const Node& node, Vec3 p, Vec3 n) const {
-  const double first = light_importance(nodes_[&node - nodes_.data() + 1].bounds, p, n);
-  const double second = light_importance(nodes_[node.second].bounds, p, n);
+  const Node& a = nodes_[&node - nodes_.data() + 1];
+  const Node& b = nodes_[node.second];
+  const double first = light_importance(a.bounds, a.centre, a.radius, p, n);
+  const double second = light_importance(b.bounds, b.centre, b.radius, p, n);
   if (!(first + second > 0)) return -1;
   return float(first / (first + second));
 }

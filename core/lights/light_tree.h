@@ -33,12 +33,15 @@ class LightTree {
  private:
   struct Node {
     LightBounds bounds;
+    Vec3 centre;  // of the bounds' bounding sphere
+    float radius = 0;
     uint32_t second = 0;  // an inner node's second child (its first follows it); 0 for a leaf
     uint32_t light = 0;   // a leaf's light
   };
   // The probability of taking the node's first child, or -1 where neither
   // child can light the point.
   float first_child_probability(const Node& node, Vec3 p, Vec3 n) const;
+  static void set_bounds(Node& node, const LightBounds& bounds);
   uint32_t build(std::vector<uint32_t>::iterator begin, std::vector<uint32_t>::iterator end,
                  const std::vector<LightBounds>& lights);
 
