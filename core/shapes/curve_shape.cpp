@@ -15,8 +15,11 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
+#include <vector>
 
 #include "core/bsdf/bsdf.h"
 #include "core/files/input_file.h"
