@@ -39,6 +39,8 @@ LightSelection::LightSelection(const std::vector<std::shared_ptr<Emitter>>& emit
   if (any) distribution_.emplace(weights);
   if (!tree_emitters_.empty()) tree_.emplace(bounds);
   if (!unbounded_.empty()) unbounded_distribution_.emplace(unbounded_weights);
+  const auto k = float(unbounded_.size());
+  unbounded_share_ = unbounded_.empty() ? 0 : !tree_ ? 1 : k / (k + 1);
 }
 
 std::optional<LightSelection::Choice> LightSelection::sample(float& u) const {
@@ -55,15 +57,8 @@ float LightSelection::pmf(const Emitter* emitter) const {
   return it == index_.end() ? 0 : distribution_->pmf(it->second);
 }
 
-float LightSelection::unbounded_share() const {
-  if (unbounded_.empty()) return 0;
-  if (!tree_) return 1;
-  const auto k = float(unbounded_.size());
-  return k / (k + 1);
-}
-
 std::optional<LightSelection::Choice> LightSelection::sample(float& u, const ReferencePoint& ref) const {
-  const float share = unbounded_share();
+  const float share = unbounded_share_;
   if (u < share) {
     u = std::min(u / share, kOneMinusEpsilon);
     float pmf = 0, remapped = 0;
@@ -79,7 +74,7 @@ std::optional<LightSelection::Choice> LightSelection::sample(float& u, const Ref
 }
 
 float LightSelection::pmf(const Emitter* emitter, const ReferencePoint& ref) const {
-  const float share = unbounded_share();
+  const float share = unbounded_share_;
   if (const auto it = tree_index_.find(emitter); it != tree_index_.end())
     return (1 - share) * tree_->pmf(it->second, ref.p, ref.n);
   if (const auto it = unbounded_index_.find(emitter); it != unbounded_index_.end())

@@ -39,8 +39,6 @@ class LightSelection {
   size_t tree_lights() const { return tree_emitters_.size(); }
 
  private:
-  float unbounded_share() const;
-
   std::vector<const Emitter*> emitters_;
   std::unordered_map<const Emitter*, size_t> index_;
   std::optional<DiscreteDistribution> distribution_;
@@ -51,6 +49,7 @@ class LightSelection {
   std::vector<const Emitter*> unbounded_;
   std::unordered_map<const Emitter*, size_t> unbounded_index_;
   std::optional<DiscreteDistribution> unbounded_distribution_;
+  float unbounded_share_ = 0;  // k / (k + 1), or 1 where the tree is empty
 };
 
 }  // namespace caustica

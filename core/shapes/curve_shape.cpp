@@ -17,18 +17,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <vector>
 
 #include "core/bsdf/bsdf.h"
-#include "core/files/input_file.h"
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "core/sampling/discrete_distribution.h"
 #include "core/shapes/curve_file.h"
-#include "core/shapes/mesh_format_error.h"
 #include "core/shapes/shape.h"
+#include "core/shapes/shape_file.h"
 
 namespace caustica {
 namespace {
@@ -41,26 +39,11 @@ struct CurveBasis {
 constexpr CurveBasis kLinear{"linearcurve", RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, 2};
 constexpr CurveBasis kBspline{"bsplinecurve", RTC_GEOMETRY_TYPE_ROUND_BSPLINE_CURVE, 4};
 
-CurveData read_curve_file(const Properties& props, const CurveBasis& basis) {
-  const std::filesystem::path file = props.get_path("filename");
-  if (const std::string problem = input_file_problem(file); !problem.empty())
-    throw props.error("filename", "curve file '" + file.string() + "' " + problem);
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
-  std::string bytes(in ? size_t(in.tellg()) : 0, '\0');
-  in.seekg(0);
-  in.read(bytes.data(), std::streamsize(bytes.size()));
-  if (!in) throw props.error("filename", "cannot read curve file '" + file.string() + "'");
-  try {
-    return read_curves(bytes, basis.span);
-  } catch (const MeshFormatError& e) {
-    throw props.error("filename", "curve file '" + file.string() + "': " + e.what());
-  }
-}
-
 class CurveShape : public Shape {
  public:
   CurveShape(const Properties& props, const CurveBasis& basis) : basis_(basis) {
-    CurveData curves = read_curve_file(props, basis);
+    const CurveData curves =
+        read_shape_file(props, "curve", [&](const std::string& text) { return read_curves(text, basis.span); });
     const Transform to_world = props.get_transform("to_world");
     points_.reserve(curves.points.size());
     for (const auto& c : curves.points) {

@@ -16,45 +16,19 @@
 //   </shape>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/errors/interrupted.h"
-#include "core/files/input_file.h"
 #include "core/registry/properties.h"
 #include "core/shapes/obj_reader.h"
 #include "core/shapes/ply_reader.h"
 #include "core/shapes/serialized_reader.h"
+#include "core/shapes/shape_file.h"
 #include "core/shapes/triangle_mesh.h"
 #include "core/shapes/vertex_normals.h"
 
 namespace caustica {
 namespace {
-
-std::filesystem::path mesh_file(const Properties& props) {
-  const std::filesystem::path file = props.get_path("filename");
-  if (const std::string problem = input_file_problem(file); !problem.empty())
-    throw props.error("filename", "mesh file '" + file.string() + "' " + problem);
-  return file;
-}
-
-// A mesh read from the file's bytes by `parse`; its errors name the file.
-template <class Parse>
-MeshData read_own_format(const Properties& props, const Parse& parse) {
-  const std::filesystem::path file = mesh_file(props);
-  // Read in one piece at the file's size: a stream grown by doubling held
-  // up to twice the file, and then a copy of it, at the load's peak.
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
-  std::string bytes(in ? size_t(in.tellg()) : 0, '\0');
-  in.seekg(0);
-  in.read(bytes.data(), std::streamsize(bytes.size()));
-  if (!in) throw props.error("filename", "cannot read mesh file '" + file.string() + "'");
-  try {
-    return parse(bytes);
-  } catch (const MeshFormatError& e) {
-    throw props.error("filename", "mesh file '" + file.string() + "': " + e.what());
-  }
-}
 
 MeshData flipped_tex_coords(MeshData mesh, bool flip) {
   if (flip)
@@ -63,19 +37,20 @@ MeshData flipped_tex_coords(MeshData mesh, bool flip) {
 }
 
 MeshData read_obj_file(const Properties& props, bool flip_tex_coords) {
-  return flipped_tex_coords(read_own_format(props, [](const std::string& text) { return read_obj(text); }),
+  return flipped_tex_coords(read_shape_file(props, "mesh", [](const std::string& text) { return read_obj(text); }),
                             flip_tex_coords);
 }
 
 MeshData read_ply_file(const Properties& props, bool flip_tex_coords) {
-  return flipped_tex_coords(read_own_format(props, [](std::string_view bytes) { return read_ply(bytes); }),
+  return flipped_tex_coords(read_shape_file(props, "mesh", [](std::string_view bytes) { return read_ply(bytes); }),
                             flip_tex_coords);
 }
 
 MeshData read_serialized_file(const Properties& props) {
   const int64_t index = props.get_int("shape_index");
   if (index < 0) throw props.error("shape_index", "must not be negative");
-  return read_own_format(props, [&](std::string_view bytes) { return read_serialized(bytes, uint64_t(index)); });
+  return read_shape_file(props, "mesh",
+                         [&](std::string_view bytes) { return read_serialized(bytes, uint64_t(index)); });
 }
 
 // What every mesh file gives the shape: triangles, and the normals it is
