@@ -24,6 +24,10 @@ GuidingSettings read_guiding_settings(const Properties& props) {
   s.refinement.directional_threshold = props.get_float("directional_threshold");
   if (!(s.refinement.directional_threshold > 0 && s.refinement.directional_threshold < 1))
     throw props.error("directional_threshold", "must be in (0, 1)");
+  const int64_t min_records = props.get_int("min_records");
+  if (min_records < 0 || min_records > 1000000000)
+    throw props.error("min_records", "must be between 0 and 1000000000 (records a guide needs before it guides)");
+  s.refinement.min_records = uint64_t(min_records);
   const int64_t mib = props.get_int("max_tree_memory");
   if (mib < 1 || mib > (int64_t(1) << 20)) throw props.error("max_tree_memory", "must be between 1 and 1048576 (MiB)");
   s.refinement.max_bytes = size_t(mib) << 20;
@@ -46,6 +50,9 @@ std::vector<ParamSpec> guiding_params() {
            "records a region may hold, times sqrt(samples per pixel of the pass), before it is halved"},
           {"directional_threshold", ParamType::Float, "0.01",
            "share of a region's energy above which a directional quadrant is divided, in (0, 1)"},
+          {"min_records", ParamType::Integer, "128",
+           "records a region's guide must learn from before its paths are guided; below it they sample the BSDF "
+           "alone"},
           {"max_tree_memory", ParamType::Integer, "256", "MiB the guiding trees may take; refinement stops there"},
           {"light_paths", ParamType::Float, "1",
            "light paths traced per camera sample of a training pass, whose records teach the directions (0 to "

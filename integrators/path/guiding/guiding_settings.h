@@ -17,6 +17,7 @@ class Scene;
 //   bsdf_fraction          probability of sampling the BSDF instead of the learned distribution
 //   spatial_threshold      records a region holds, times sqrt(samples per pixel of the pass), before it is halved
 //   directional_threshold  share of a region's energy above which a directional quadrant is divided
+//   min_records            records a guide needs before its paths are guided
 //   max_tree_memory        MiB the trees may take; refinement stops there
 //   light_paths            light paths traced per camera sample of a training pass, whose
 //                          records teach the directions; 0: camera paths' records teach them

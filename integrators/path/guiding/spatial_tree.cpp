@@ -57,13 +57,17 @@ size_t GuidingTree::bytes() const {
 void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
   struct Recorded {
     std::array<DirectionalDistribution, kNormalBuckets> distributions;
+    std::array<uint64_t, kNormalBuckets> bucket_records;
     uint64_t records;
   };
   std::vector<Recorded> recorded;
   recorded.reserve(regions_.size());
   for (const GuidingRegion& r : regions_) {
     Recorded& out = recorded.emplace_back();
-    for (int b = 0; b < kNormalBuckets; ++b) out.distributions[b] = r.guides[b].recording.distribution();
+    for (int b = 0; b < kNormalBuckets; ++b) {
+      out.distributions[b] = r.guides[b].recording.distribution();
+      out.bucket_records[b] = r.guides[b].records.load();
+    }
     out.records = r.records.load();
   }
 
@@ -96,6 +100,8 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
       continue;
     }
     bytes += more;
+    // Each half's count predicts its next pass's records; both halves'
+    // guides still learn from every record of the whole.
     r.records /= 2;
     const auto first = uint32_t(nodes_.size());
     nodes_.push_back({{0, 0}, nodes_[n].region});
@@ -123,7 +129,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
         bytes += more;
       }
       region.guides[b].recording = DirectionalRecorder(std::move(shape));
-      region.guides[b].sampling = std::move(d);
+      if (r.bucket_records[b] >= settings.min_records) region.guides[b].sampling = std::move(d);
     }
   }
 }

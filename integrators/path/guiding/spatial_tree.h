@@ -20,6 +20,12 @@ struct GuidingRefinement {
   // A directional quadrant is divided once it holds more than this share of
   // its region's energy.
   double directional_threshold = 0.01;
+  // A guide learnt from fewer records than this is left empty, and its
+  // paths sample the BSDF alone: a few records make a spiky distribution,
+  // and every BSDF-sampled direction it gives no density to weighs up to
+  // 1 / bsdf_fraction of what it would under the BSDF alone, a factor that
+  // compounds over the path's vertices into rare, very bright samples.
+  uint64_t min_records = 128;
   int max_directional_depth = 20;
   int max_spatial_depth = 48;
   // Refinement stops where the trees would need more bytes than this.
@@ -31,6 +37,7 @@ struct GuidingRefinement {
 struct DirectionalGuide {
   DirectionalDistribution sampling;
   DirectionalRecorder recording;
+  std::atomic<uint64_t> records{0};  // recorded this pass
 };
 
 // Surfaces facing apart see light from apart: a region keeps one guide for
@@ -49,6 +56,7 @@ struct GuidingRegion {
   // the region.
   void record(int bucket, Vec2 direction, double energy) {
     guides[bucket].recording.record_spread(direction, energy);
+    guides[bucket].records.fetch_add(1, std::memory_order_relaxed);
     count();
   }
   // Where light paths teach the directions, camera paths only count: both

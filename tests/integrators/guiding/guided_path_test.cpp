@@ -21,8 +21,9 @@ using testing::HasSubstr;
 using testing::Not;
 
 const std::string kBox = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml";
-// Low enough that a small image's records divide space into many regions.
-const std::string kGuided = "guided_path:spatial_threshold=100";
+// Low enough that a small image's records divide space into many regions,
+// and guide wherever a region learnt anything.
+const std::string kGuided = "guided_path:spatial_threshold=100,min_records=0";
 const std::string kAlwaysGuided = kGuided + ",always_guide=true";
 
 std::vector<float> render(const LoadedScene& scene, const std::string& integrator, uint32_t spp, int threads,
@@ -205,6 +206,8 @@ TEST(GuidedPath, BadParametersNameThemselves) {
        "'directional_threshold' of integrator 'guided_path': must be in (0, 1)"},
       {"<integer name='max_tree_memory' value='0'/>",
        "'max_tree_memory' of integrator 'guided_path': must be between 1 and 1048576 (MiB)"},
+      {"<integer name='min_records' value='-1'/>",
+       "'min_records' of integrator 'guided_path': must be between 0 and 1000000000 (records a guide needs"},
       {"<float name='light_paths' value='-1'/>",
        "'light_paths' of integrator 'guided_path': must be between 0 and 1024 (light paths per camera sample"},
       {"<float name='light_paths' value='2000'/>",

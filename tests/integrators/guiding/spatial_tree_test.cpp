@@ -62,6 +62,36 @@ TEST(GuidingTree, RegionsWithFewRecordsStayWhole) {
   EXPECT_EQ(tree.regions(), 1u);
 }
 
+// A guide learnt from fewer than min_records records stays empty (its
+// paths sample the BSDF alone); from min_records on it samples by them.
+// Halving a region does not thin its halves' guides: both learnt from all
+// of its records.
+TEST(GuidingTree, GuidesLearntFromFewRecordsStayEmpty) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 100;
+  settings.min_records = 120;
+  record(tree, {0.2f, 0.5f, 0.5f}, 119);
+  tree.refine(settings, 1);
+  ASSERT_EQ(tree.regions(), 2u);
+  EXPECT_TRUE(tree.region_at({0.2f, 0.5f, 0.5f}).guides[0].sampling.empty());
+  EXPECT_TRUE(tree.region_at({0.8f, 0.5f, 0.5f}).guides[0].sampling.empty());
+
+  GuidingTree enough(unit_box());
+  record(enough, {0.2f, 0.5f, 0.5f}, 120);
+  enough.refine(settings, 1);
+  ASSERT_EQ(enough.regions(), 2u);
+  EXPECT_GT(enough.region_at({0.2f, 0.5f, 0.5f}).guides[0].sampling.pdf({0.1f, 0.1f}), 1);
+  EXPECT_GT(enough.region_at({0.8f, 0.5f, 0.5f}).guides[0].sampling.pdf({0.1f, 0.1f}), 1);
+  // Another bucket of the same region took no records: still unguided.
+  EXPECT_TRUE(enough.region_at({0.2f, 0.5f, 0.5f}).guides[1].sampling.empty());
+
+  // Records are counted afresh each pass: 119 in the next leave it empty again.
+  record(enough, {0.2f, 0.5f, 0.5f}, 119);
+  enough.refine(settings, 1);
+  EXPECT_TRUE(enough.region_at({0.2f, 0.5f, 0.5f}).guides[0].sampling.empty());
+}
+
 TEST(GuidingTree, PointsOutsideTheBoundsFallInTheNearestRegion) {
   GuidingTree tree(unit_box());
   GuidingRefinement settings;
