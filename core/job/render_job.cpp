@@ -38,7 +38,7 @@ RenderJob::RenderJob(LoadedScene scene, RenderSettings settings)
 std::string RenderJob::plan() const {
   std::string plan = integrator_->plan(*scene_);
   if (transport_worth_telling(scene_->features())) {
-    plan += '\n';
+    if (!plan.empty()) plan += '\n';
     plan += describe_transport(scene_->features());
   }
   return plan;

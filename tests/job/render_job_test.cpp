@@ -11,6 +11,7 @@
 
 #include "core/job/range_merge.h"
 #include "core/job/render_outputs.h"
+#include "core/loader/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -51,6 +52,21 @@ TEST(RenderJob, AnOverrideKeepsTheSettingsTheScenesIntegratorShares) {
               StartsWith("sppm max_depth=-1 rr_depth=5 "));
   EXPECT_THAT(described("", "bdpt"), StartsWith("bdpt max_depth=-1"));
   EXPECT_THAT(described(path, ""), StartsWith("path max_depth=65"));
+}
+
+// An integrator with nothing to say of its own (direct) leaves the
+// transport's line alone, not after an empty line.
+TEST(RenderJob, APlanWithoutTheIntegratorsLineStartsWithTheTransport) {
+  const auto plan = [](const std::string& integrator) {
+    RenderSettings settings;
+    settings.integrator = integrator;
+    return RenderJob(load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-spectral.xml", {{"res", "8"}}),
+                     settings)
+        .plan();
+  };
+  EXPECT_THAT(plan("direct"), StartsWith("spectral transport: yes"));
+  EXPECT_THAT(plan("path"), StartsWith("path: "));
+  EXPECT_THAT(plan("path"), HasSubstr("\nspectral transport: yes"));
 }
 
 const std::string kGlass = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml";
