@@ -123,7 +123,8 @@ class GuidedPathIntegrator final : public PixelIntegrator {
     return plugin_name() + ": path tracing with directions learnt from " + teacher + " over " +
            std::to_string(guiding_.training_passes) + " training passes (" + std::to_string(spp) +
            " samples per pixel, each counted in the image), mixed with BSDF sampling (bsdf_fraction " +
-           std::to_string(guiding_.bsdf_fraction) + ") by one-sample MIS; surfaces with delta lobes unguided" +
+           std::to_string(guiding_.bsdf_fraction) + ") by one-sample MIS; surfaces with delta lobes unguided, and " +
+           "where a guide learnt from fewer than " + std::to_string(guiding_.refinement.min_records) + " records" +
            (scene.features().media ? "; media: scattering in a medium follows its phase function, unguided" : "") +
            "; trees capped at " + std::to_string(guiding_.refinement.max_bytes >> 20) + " MiB" +
            (guiding_.always_guide ? std::string("; guides every pass (always_guide)")

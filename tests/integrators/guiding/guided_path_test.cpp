@@ -72,6 +72,10 @@ TEST(GuidedPath, IsPathWhereItHasNotLearnt) {
   const auto direct = load_scene(kBox, {{"res", "24"}, {"max_depth", "2"}, {"integrator", "guided_path"}});
   EXPECT_TRUE(same_bits(render(direct, "", 12, 2), render(direct, "path", 12, 2)));
   EXPECT_THAT(direct.integrator->plan(*direct.scene), HasSubstr("guiding skipped (max_depth 2 leaves no light"));
+  // Where it can learn, the plan says which guides stay unguided.
+  const auto box = load_scene(kBox, {{"res", "24"}});
+  EXPECT_THAT(make_integrator("guided_path:min_records=77")->plan(*box.scene),
+              HasSubstr("unguided, and where a guide learnt from fewer than 77 records"));
 }
 
 // On the box whose light hides above a baffle, guiding must pay: light
