@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::string kLook = "<lookat origin='0, 1, 4' target='0, 0, 0' up='0, 1, 0'/>";
 
@@ -81,5 +82,6 @@ TEST(MovingSensor, AtEachTimeItIsTheStillCameraThere) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

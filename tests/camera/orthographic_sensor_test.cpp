@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -67,5 +68,6 @@ TEST(OrthographicSensor, BadPlacement) {
               HasSubstr("must not shear"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

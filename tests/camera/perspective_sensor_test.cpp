@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LoadedScene camera_scene(const std::string& axis, int w, int h) {
   return test::scene_from_xml(
@@ -136,5 +137,6 @@ TEST(PerspectiveSensor, ImportanceIntegratesToOne) {
   EXPECT_NEAR(sum / n, 1.0, 0.03);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

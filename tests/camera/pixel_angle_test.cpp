@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LoadedScene camera(const std::string& sensor, int width) {
   const std::string lens = sensor == "thinlens" ? "<float name='aperture_radius' value='0.1'/>" : "";
@@ -32,5 +33,6 @@ TEST(PixelAngle, OrthographicRaysAreParallel) {
   EXPECT_EQ(degrees_per_pixel(scene->sensor()), 0);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -145,5 +146,6 @@ TEST(ThinLensSensor, BadParameters) {
   EXPECT_NO_THROW(test::scene_from_xml(sensor_xml("thinlens", "<float name='aperture_radius' value='1e8'/>")));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

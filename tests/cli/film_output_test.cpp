@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::run_caustica;
@@ -192,5 +193,6 @@ TEST(FilmOutput, OutputsThatCannotHoldTheRenderAreRefused) {
               HasSubstr("--raw-sums needs an .exr output, not out.hdr"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

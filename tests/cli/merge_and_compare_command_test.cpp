@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -150,5 +151,6 @@ TEST_F(MergeAndCompare, RangesOfOneSeedMergeIntoTheRenderOfTheirUnion) {
   EXPECT_EQ(whole_meta["caustica:first_sample"], "0");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -414,5 +415,6 @@ TEST(RenderCommand, OutputsHoldNoInfinity) {
     }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::filesystem::path kConfig = std::string(CAUSTICA_SOURCE_DIR) + "/core/color/config.ocio";
 
@@ -102,5 +103,6 @@ colorspaces:
   EXPECT_EQ(default_ocio_config(), kConfig);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Spencer et al.'s photopic PSF as the paper prints it, theta in degrees.
 double paper_psf(double theta) {
@@ -182,5 +183,6 @@ TEST(Glare, Refusals) {
   EXPECT_STREQ(glare_mode_name(GlareMode::Whole), "whole");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The bilinear weights keep a pixel's light and its position: between
 // the outer centres the weighted centres land on the pixel, beyond them
@@ -71,5 +72,6 @@ TEST(GlareTwoScale, ReproducesTheKernelFromAnyPixel) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

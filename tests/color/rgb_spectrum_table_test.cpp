@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -129,5 +130,6 @@ TEST(RgbSpectrumTable, FilesRoundTripAndBadOnesAreRefused) {
   EXPECT_THAT(read_error(temp_file("missing.bin")), HasSubstr("missing.bin: cannot be opened"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

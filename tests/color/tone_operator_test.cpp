@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::shared_ptr<ToneOperator> make(const std::string& name, std::vector<std::pair<std::string, double>> params = {}) {
   const PluginInfo* info = Registry::instance().find("tonemap", name);
@@ -179,5 +180,6 @@ TEST(ToneOperator, ExposureIsAParameter) {
   EXPECT_EQ(make("none")->exposure(), 0.0f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -224,5 +225,6 @@ TEST(FilmBuffer, NonFiniteSplatsAreDroppedAndCounted) {
   EXPECT_FLOAT_EQ(img[(1 * 4 + 1) * 3], 1.0f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::shared_ptr<ReconstructionFilter> make_filter(const std::string& name) {
   const PluginInfo* info = Registry::instance().find("rfilter", name);
@@ -89,5 +90,6 @@ TEST(Filter, DefaultRadii) {
   EXPECT_FLOAT_EQ(make_filter("gaussian")->radius(), 2.0f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(RayLog, RecordsEveryRayARenderTraces) {
   const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "8"}});
@@ -30,5 +31,6 @@ TEST(RayLog, RecordsEveryRayARenderTraces) {
   EXPECT_EQ(log.entries().size(), entries.size());  // detached: nothing more is recorded
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string read(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -103,5 +104,6 @@ TEST(AtomicFile, SuccessReplacesInOneStep) {
   EXPECT_FALSE(std::filesystem::exists(seen));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // 1024 x 700 x 3 floats: bands of about a million values hold 341 rows, so
 // the image takes three bands, the last one short.
@@ -81,5 +82,6 @@ TEST(BandedOutput, ExtremeValuesAreCountedInEveryBand) {
   EXPECT_EQ(n.at_float_limit, 2u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

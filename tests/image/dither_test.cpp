@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kWidth = 2048, kHeight = 16;
 
@@ -70,5 +71,6 @@ TEST(Dither, SixteenBitsRoundWithoutNoise) {
 
 TEST(Dither, IsReproducible) { EXPECT_EQ(quantize(ramp(), kWidth, 8), quantize(ramp(), kWidth, 8)); }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

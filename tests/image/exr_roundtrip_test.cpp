@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Image layered_image() {
   Image image{5,
@@ -68,5 +69,6 @@ TEST(ImageInput, MissingFileNamesIt) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(FftLength, SmallestSevenSmoothLengthAtLeastN) {
   EXPECT_EQ(fft_length(1), 1);
@@ -54,5 +55,6 @@ TEST(EvenKernel, TotalCountsEveryMirrorImage) {
   EXPECT_DOUBLE_EQ(kernel.total(), 1 + 2 * 10 + 2 * 100 + 4 * 1000);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

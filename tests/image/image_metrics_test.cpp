@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Two pixels, worked by hand:
 //   image      (1, 2, 3)  (0, 0, 0.5)
@@ -101,5 +102,6 @@ TEST(ImageMetrics, NonFiniteValuesAreNamed) {
   EXPECT_EQ(error_of(image, reference), "the image has 1 non-finite value, the first at pixel (2, 1) in G (nan)");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -151,5 +152,6 @@ TEST(RenderMerge, InterruptedIfAnyPartWas) {
   EXPECT_EQ(merge_renders({kA, kB}).metadata.at("caustica:interrupted"), "false");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -25,6 +25,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kReflectance = 0.5, kIrradiance = 3;
 
@@ -137,5 +138,6 @@ TEST(AnalyticDirect, NoAcneFarFromTheOrigin) {
                    integrator);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(AovIntegrator, AlbedoNormalDepthAtTheFirstHit) {
   const auto scene = test::scene_from_xml(
@@ -190,5 +191,6 @@ TEST(AovIntegrator, NestedIntegratorsThatCannotBeAreRefused) {
               testing::HasSubstr("two nested integrators of aov are named 'a'"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -29,6 +29,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kRho = 0.6, kIntensity = 2, kCutoffDeg = 30;
 constexpr int kPixels = 24;
@@ -145,5 +146,6 @@ TEST(CameraModels, OrthographicAgreesEverywhere) {
   expect_regions_match(sensor, kIntegrators, 0.5, 0, 100);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

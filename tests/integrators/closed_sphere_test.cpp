@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const double kZCritical = test::two_sided_z_critical(0.001);
 
@@ -161,5 +162,6 @@ TEST(ClosedSphere, LightTracingAndBidirectionalAreUnbiased) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string sphere_under_sky(const std::string& integrator, const std::string& sampler) {
   return "<scene version='3.0.0'><integrator type='" + integrator +
@@ -98,5 +99,6 @@ TEST(ConvergenceRate, LowDiscrepancySamplesConvergeFaster) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

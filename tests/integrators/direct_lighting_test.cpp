@@ -26,6 +26,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr float kRho = 0.6f, kLe = 3.0f, kRadius = 0.25f, kHeight = 1.0f;
 
@@ -394,5 +395,6 @@ TEST(DirectLighting, EmittersSeenDirectlyAndHidden) {
   EXPECT_FLOAT_EQ(out[0], 0);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

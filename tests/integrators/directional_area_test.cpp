@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kRho = 0.6, kE = 2;
 
@@ -137,5 +138,6 @@ TEST(DirectionalArea, InfoSaysWhoCanRenderIt) {
   EXPECT_THAT(r.output, testing::Not(testing::HasSubstr("ptracer: cannot")));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -19,6 +19,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr float kRho = 0.7f, kLe = 0.8f;
 constexpr int kRuns = 12;
@@ -57,5 +58,6 @@ TEST(EnvironmentLight, DiffusePlaneUnderUniformSky) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

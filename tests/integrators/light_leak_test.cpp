@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string boxed_light(const std::string& integrator, double size) {
   const auto v = [size](double x) {
@@ -73,5 +74,6 @@ TEST(LightLeak, WithoutTheBoxTheFloorIsLit) {
   EXPECT_GT(sum, 1.0);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

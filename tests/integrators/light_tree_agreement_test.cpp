@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 16, kRegionsPerSide = 4, kRuns = 16;
 constexpr uint32_t kSpp = 256;
@@ -95,5 +96,6 @@ TEST(LightTreeAgreement, FlatLightsFacingEveryWayMatchTheChoiceByPower) {
         << tree[i].standard_error << ", power " << power[i].mean << " +- " << power[i].standard_error;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LoadedScene dense_ball(const std::string& integrator, const std::string& sigma_t) {
   return test::scene_from_xml(
@@ -65,5 +66,6 @@ TEST(LongWalk, UnlimitedWalksStopAtTheLongestWalk) {
   EXPECT_EQ(light_walk_limits(five).max_segments, 4);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

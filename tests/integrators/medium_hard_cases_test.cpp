@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class MediumHardCases : public testing::TestWithParam<const char*> {
  protected:
@@ -95,5 +96,6 @@ TEST_P(MediumHardCases, TheCameraInsideABoundedMedium) {
 INSTANTIATE_TEST_SUITE_P(Integrators, MediumHardCases, testing::Values("path", "ptracer", "bdpt"),
                          test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

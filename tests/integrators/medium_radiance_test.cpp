@@ -28,6 +28,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -196,5 +197,6 @@ TEST(MediumRadiance, IntegratorsWithoutMediaRefuseTheScene) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

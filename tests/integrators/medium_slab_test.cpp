@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kChecks = 2 * 3;
 const double kZCritical = test::two_sided_z_critical(1 - std::pow(1 - 0.001, 1.0 / kChecks));
@@ -144,5 +145,6 @@ TEST_P(MediumSlab, SingleScatteringMatchesTheFirstOrder) { expect_slab(1, 0.8, 2
 
 INSTANTIATE_TEST_SUITE_P(Integrators, MediumSlab, testing::Values("path", "bdpt"), test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -465,5 +466,6 @@ TEST(MotionBlur, IntegratorsThatCannotFollowATimeSaySo) {
               HasSubstr("motion: moving during the shutter: 1 shape; camera rays draw a time"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -138,5 +139,6 @@ TEST(MovingCamera, BadKeysAreRefusedByName) {
               HasSubstr("motion: moving during the shutter: the camera;"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

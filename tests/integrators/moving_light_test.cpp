@@ -26,6 +26,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -227,5 +228,6 @@ TEST(MovingLight, WhatCannotMoveIsRefusedByName) {
               HasSubstr("motion: moving during the shutter: 1 light;"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -168,5 +169,6 @@ TEST(Projector, BadParametersNameThemselves) {
               HasSubstr("parameter 'irradiance' of emitter 'projector': must not be negative"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

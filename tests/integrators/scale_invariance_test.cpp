@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -93,5 +94,6 @@ TEST(ScaleInvariance, ScenesTooSmallOrTooFarAreRefused) {
               HasSubstr("the shapes reach 2e+08 from the camera"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A 4x4 square at z = 0 whose four vertex normals lean 30 degrees toward +x.
 std::string vertex_normal_floor() {
@@ -85,5 +86,6 @@ TEST(ShadingNormals, LightTracingAndBidirectionalAgreeWithPath) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

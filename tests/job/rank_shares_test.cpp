@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The shares cover the range exactly, in rank order, without overlap, and
 // differ in size by at most one, for ranges smaller and larger than the
@@ -39,5 +40,6 @@ TEST(RankShares, TheLargerSharesRotateWithTheRound) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

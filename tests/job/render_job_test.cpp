@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 using testing::StartsWith;
@@ -203,5 +204,6 @@ TEST(RenderJob, RangeMergeRefusesOverlapsOtherSeedsAndMissingSums) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

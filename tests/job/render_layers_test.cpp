@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A render of the Cornell box and its first-hit layers.
 struct Rendered {
@@ -85,5 +86,6 @@ TEST(RenderLayers, EvaluatedLayersAreWrittenInFloatAndNotScanned) {
   EXPECT_TRUE(merged.rows().float_only.empty());
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(ReplayCommand, NamesEveryOptionTheSampleDependsOn) {
   RenderSettings settings;
@@ -36,5 +37,6 @@ TEST(ReplayCommand, QuotesArgumentsAShellWouldSplit) {
             "--debug-sample 3");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

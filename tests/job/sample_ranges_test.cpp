@@ -4,6 +4,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Out of order, touching, empty and apart: sorted, joined where they touch,
 // empty ones gone, listed inclusively.
@@ -14,5 +15,6 @@ TEST(SampleRanges, JoinTouchingRangesAndListThemInclusively) {
   EXPECT_EQ(format_ranges(joined_ranges({})), "");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LoadedScene light_scene(const std::string& shape) {
   return test::scene_from_xml("<scene version='3.0.0'>" + shape + "</scene>");
@@ -186,5 +187,6 @@ TEST(ConstantEmitter, IlluminatesFromEveryDirection) {
   EXPECT_GT(length(le->ray.o), 1.0f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -204,5 +205,6 @@ TEST(Envmap, RadianceBeyondFloatIsRefusedByWhatOverflows) {
                 "express the scene in other units"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

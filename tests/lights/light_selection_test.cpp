@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct LightSpec {
   std::string xml;
@@ -95,5 +96,6 @@ TEST(LightSelection, PicksLightsInProportionToTheirPower) {
   EXPECT_GT(chi2.p_value, 0.01) << chi2.report;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LightBounds point_light(Vec3 p, float phi) {
   LightBounds b;
@@ -260,5 +261,6 @@ TEST(LightSelection, TreeAndUnboundedLightsShareTheChoice) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::filesystem::path kCorpus = std::filesystem::path(CAUSTICA_SOURCE_DIR) / "scenes" / "compat";
 
@@ -94,5 +95,6 @@ TEST(CompatCorpus, AWarmBlackBodyLampLooksOrange) {
   EXPECT_GT(g, 1.5 * b);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -86,5 +87,6 @@ TEST(MediaLoading, BadMediaAreErrors) {
               HasSubstr("bad.xml:4: parameter 'interior' of shape 'sphere' must be medium, not bsdf"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

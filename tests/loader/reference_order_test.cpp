@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -91,5 +92,6 @@ TEST(ReferenceOrder, AnObjectReferringToItselfIsACycleOfOne) {
               HasSubstr("self.xml:2: references form a cycle: 'a' -> 'a'"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 using testing::StartsWith;
@@ -892,5 +893,6 @@ TEST(SceneLoader, ObjFaceIndicesOutOfRangeAreRefused) {
                         "': line 5: face refers to vertex 4 (counting from 1), but the file defines 3"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

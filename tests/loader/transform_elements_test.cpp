@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A rectangle placed by `steps`, the camera at the origin (so render space
 // is world space).
@@ -101,5 +102,6 @@ TEST(TransformElements, StepsApplyInTheOrderWritten) {
   EXPECT_TRUE(probe(translate_first, {3.5f, 0, 1}, kDown));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

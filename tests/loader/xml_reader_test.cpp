@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -323,5 +324,6 @@ TEST(XmlReader, DeepNestingIsRefused) {
             "deep.xml:2: <a> is nested more than 64 elements deep");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 
@@ -123,5 +124,6 @@ TEST(BlendBsdf, BadInput) {
               testing::HasSubstr("weight"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::direction;
@@ -197,5 +198,6 @@ TEST(PerturbedFrames, BadInput) {
               testing::HasSubstr("normalmap"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

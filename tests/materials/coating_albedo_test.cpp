@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr float kEta = 1.49f;
 
@@ -81,5 +82,6 @@ TEST(CoatingAlbedo, MatchesTheAlbedoIntegratedOverNormals) {
     }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 using ::testing::HasSubstr;
@@ -194,5 +195,6 @@ TEST(ConductorBsdf, MitsubasTablesAtTheChannelWavelengths) {
   EXPECT_FLOAT_EQ(float(alsb->eta_spectrum->at(800)), 4.01f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

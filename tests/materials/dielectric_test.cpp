@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -226,5 +227,6 @@ TEST(DielectricBsdf, SpecularScalesApplyPerLobe) {
   EXPECT_NEAR(t->f.b * std::abs(t->wi.z) / t->pdf, 0.8f, 1e-6f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

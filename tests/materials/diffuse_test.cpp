@@ -5,6 +5,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 
@@ -42,5 +43,6 @@ TEST(DiffuseBsdf, WhiteFurnaceAndReciprocity) {
   EXPECT_FLOAT_EQ(white->eval({}, direction(0.3f), direction(1.2f)).g, kInvPi);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(FresnelDielectric, NormalIncidenceAndIndexMatching) {
   // ((eta - 1) / (eta + 1))^2 at normal incidence, from either side.
@@ -92,5 +93,6 @@ TEST(Reflection, MirrorsAndRefracts) {
   EXPECT_NEAR(t.x, -w.x * f.eta_ti, 1e-6f);  // tangential part scaled by 1 / eta
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

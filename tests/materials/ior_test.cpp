@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A stand-in plugin declaration, to read IOR parameters as a material would.
 const PluginInfo kInfo{"bsdf", "ior_reader", {{"int_ior", ParamType::Ior, "bk7", ""}}, {}, nullptr, {}};
@@ -45,5 +46,6 @@ TEST(Ior, BadValuesNameTheLine) {
 // relative to the ice around it).
 TEST(Ior, IndicesBelowOneAreAccepted) { EXPECT_FLOAT_EQ(read({ValueKind::Float, 0.763, {"test.xml", 5}}), 0.763f); }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

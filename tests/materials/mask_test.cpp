@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 
@@ -120,5 +121,6 @@ TEST(MaskBsdf, NeedsOneNestedBsdf) {
               testing::HasSubstr("nested bsdf"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -19,6 +19,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -118,5 +119,6 @@ TEST(MicrofacetAlbedo, QuadratureOracleReproducesKnownValues) {
               (0.8427007929 - 1) / 2 + 0.3678794412 / (2 * 1.7724538509), 1e-6);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using Type = MicrofacetDistribution::Type;
 
@@ -122,5 +123,6 @@ TEST(Microfacet, ParsesItsNames) {
   EXPECT_THROW(MicrofacetDistribution::parse_type("phong"), std::invalid_argument);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 using ::testing::HasSubstr;
@@ -184,5 +185,6 @@ TEST(PhongBsdf, EnergyGainIsScaledAwayOrRefused) {
             "");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -290,5 +291,6 @@ TEST(PrincipledBsdf, BadParametersNameThemselves) {
               HasSubstr("parameter 'base_color' of bsdf 'principled': must not be negative"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -181,5 +182,6 @@ TEST(PrincipledThinBsdf, BadParametersNameThemselves) {
   EXPECT_THAT(error("<float name='diffuse_transmittance_sampling_rate' value='0'/>"), HasSubstr("must be positive"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 
@@ -203,5 +204,6 @@ TEST(RoughConductorBsdf, BadInput) {
       "not both");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

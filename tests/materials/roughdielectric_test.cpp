@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -295,11 +296,13 @@ TEST(RoughDielectricBsdf, BadParameters) {
             "no error");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // sample_visible = false draws facet normals from D(m) cos(theta_m) instead;
 // sampling and pdf must still agree (2 chi-square tests, counted in
@@ -320,5 +323,6 @@ TEST(RoughDielectricBsdf, SamplingAllNormalsAgreesWithItsPdf) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 using ::testing::HasSubstr;
@@ -169,5 +170,6 @@ TEST(RoughPlasticBsdf, BadParametersNameThemselves) {
               HasSubstr("alpha"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class SurfaceBsdfQueries : public testing::TestWithParam<std::string> {};
 
@@ -50,5 +51,6 @@ INSTANTIATE_TEST_SUITE_P(Materials, SurfaceBsdfQueries,
                                          "<bsdf type='roughconductor'><float name='alpha_u' value='0.1'/>"
                                          "<float name='alpha_v' value='0.4'/></bsdf>"));
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const char* const kDiffuse = "<bsdf type='diffuse'/>";
 const char* const kBump = "<bsdf type='bumpmap'><texture type='checkerboard'/><bsdf type='diffuse'/></bsdf>";
@@ -64,5 +65,6 @@ TEST(TangentUse, PerturbedFramesReadThemAloneAndNested) {
   EXPECT_TRUE(test::make_bsdf(std::string("<bsdf type='blendbsdf'>") + kDiffuse + kBump + "</bsdf>")->reads_tangents());
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -319,5 +320,6 @@ TEST(ScaleTexture, ScalesTheNestedTexture) {
               testing::HasSubstr("test.xml:2: a scale texture needs a nested <texture> to scale"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

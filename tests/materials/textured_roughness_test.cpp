@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::direction;
 
@@ -54,5 +55,6 @@ TEST(TexturedRoughness, NegativeRoughnessIsRefused) {
       testing::HasSubstr("parameter 'alpha' of bsdf 'roughconductor': roughness must be finite and not negative"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -132,5 +133,6 @@ TEST(ThinDielectricBsdf, SpecularScalesApplyPerLobe) {
   EXPECT_NEAR(t->f.b * std::abs(t->wi.z) / t->pdf, 0.8f, 1e-6f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::below;
 using test::direction;
@@ -86,5 +87,6 @@ TEST(TwoSidedBsdf, BadNesting) {
               testing::HasSubstr("bsdf 'twosided' cannot wrap a bsdf that transmits light"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

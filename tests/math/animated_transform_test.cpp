@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 void expect_matrix_near(const Matrix4& a, const Matrix4& b, double tolerance) {
   for (int i = 0; i < 3; ++i)
@@ -77,5 +78,6 @@ TEST(AnimatedTransform, NamesTheFirstKeyThatRescales) {
   EXPECT_EQ(AnimatedTransform({scale, Transform::scale({2, 1, 0.6f}), scale}).first_rescaled_key(), 2u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

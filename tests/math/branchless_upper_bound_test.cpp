@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Against std::upper_bound on sorted arrays of every length up to 40, with
 // runs of equal values (a CDF's zero-weight entries), probing each value,
@@ -30,5 +31,6 @@ TEST(BranchlessUpperBound, AgreesWithTheStandardSearch) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kFinestBit = -20;  // every term is a multiple of 2^kFinestBit
 
@@ -114,5 +115,6 @@ TEST(ExactSum, ZeroHasOneBitPattern) {
   for (const ExactSum& s : {cancelled, negative_zero, ExactSum{}}) expect_same_bits(s, ExactSum{});
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 void expect_same_bits(Vec3 expected, Float4 actual) {
   for (int i = 0; i < 3; ++i) EXPECT_EQ(std::bit_cast<uint32_t>(expected[i]), std::bit_cast<uint32_t>(actual[i])) << i;
@@ -44,5 +45,6 @@ TEST(Float4, AgreesWithVec3BitForBit) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(NextFloat, AgreesWithNextafterTowardInfinities) {
   const float inf = std::numeric_limits<float>::infinity();
@@ -40,5 +41,6 @@ TEST(NextFloat, AgreesWithNextafterTowardInfinities) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 void expect_near(Vec3 a, Vec3 b, float tol = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, tol);
@@ -77,5 +78,6 @@ TEST(Frame, IsOrthonormalForEveryNormal) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using testing::HasSubstr;
@@ -309,5 +310,6 @@ TEST(GridVolume, BadFilesAndParametersAreErrors) {
               HasSubstr("bad.xml:5: parameter 'filter_type' of volume 'gridvolume': must be trilinear or nearest"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

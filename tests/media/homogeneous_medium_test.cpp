@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -176,5 +177,6 @@ TEST(HomogeneousMedium, BadParametersAreErrors) {
   EXPECT_THAT(error("<float name='sigma' value='1'/>"), HasSubstr("bad.xml:3"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -120,5 +121,6 @@ TEST(PhaseFunction, BadParametersAreErrors) {
               HasSubstr("bad.xml:3: unknown phase type 'rayleigh' (available: hg, isotropic)"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A null cube [-1, 1]^3 filled with a medium of extinction 0.5, and a light
 // far away so that the scene has one.
@@ -61,5 +62,6 @@ TEST(ShadowTransmittance, EndsWithinRoundingPastABoundary) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

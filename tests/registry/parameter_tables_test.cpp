@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string readme_section() {
   std::ifstream in(std::string(CAUSTICA_SOURCE_DIR) + "/docs/plugins.md");
@@ -55,5 +56,6 @@ TEST(EffectiveParameters, FollowTheDeclarationsWithTheValuesUsed) {
             "strategy_layers=0");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

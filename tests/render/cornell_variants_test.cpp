@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRegion = 4, kSpp = 1024;
 const char* const kScenes[] = {"cornell-box",        "cornell-box-glass", "cornell-box-mirror",
@@ -78,5 +79,6 @@ TEST_P(CornellVariant, FiniteAndAgreesWithTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CornellVariant, testing::ValuesIn(kScenes), test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

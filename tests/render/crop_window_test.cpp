@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRuns = 16;
 
@@ -78,5 +79,6 @@ TEST(CropWindow, RendersWhatTheWholeFilmShowsThere) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::string kScene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml";
 
@@ -58,5 +59,6 @@ TEST(Determinism, ReplayedSampleIsTheOneInTheImage) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -62,5 +63,6 @@ TEST(FarFromOrigin, TheCornellBoxRendersAsAtTheOrigin) {
     }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

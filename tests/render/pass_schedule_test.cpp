@@ -4,6 +4,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The schedule written out by hand: 1, 2, 4, ... samples up to the cap.
 TEST(PassSchedule, DoublesUpToTheCapThenStays) {
@@ -30,5 +31,6 @@ TEST(PassSchedule, CapsThatAreNotPowersOfTwoAndOne) {
   EXPECT_EQ(pass_containing(5, 0).count, 1u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

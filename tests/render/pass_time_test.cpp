@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(PassTime, PassesFillTheShutterEvenly) {
   for (const uint64_t seed : {0ull, 7ull, 123456789ull})
@@ -51,5 +52,6 @@ TEST(PassTime, AcrossSeedsAPassTimeIsUniform) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

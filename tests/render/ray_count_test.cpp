@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(RayCount, FirstHitLayersAreCountedApartFromTheIntegratorsRays) {
   const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.xml", {{"res", "8"}});
@@ -31,5 +32,6 @@ TEST(RayCount, FirstHitLayersAreCountedApartFromTheIntegratorsRays) {
   EXPECT_EQ(bottom.sample_count({7, 2}), 16u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -18,6 +18,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The next number `sampler` gives after `drawn` numbers of sample 0.
 float number_after(int drawn) {
@@ -96,5 +97,6 @@ TEST(RussianRoulette, ThroughputsThatAreNotFiniteAlwaysMeetRoulette) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // How often each box of a grid of columns x rows is hit by `points`
 // must be floor or ceil of their number over the boxes.
@@ -72,5 +73,6 @@ TEST(HaltonSampler, BadSampleCount) {
                                  "32-bit count"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

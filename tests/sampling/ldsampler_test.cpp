@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // One sample's draws in the order a path might make them: 1-D, 2-D, 1-D, 2-D, 1-D, 2-D.
 struct Draws {
@@ -127,5 +128,6 @@ TEST(LowDiscrepancySampler, BadSampleCount) {
                                  "32-bit count"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

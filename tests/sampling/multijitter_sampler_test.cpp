@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct Grid {
   int count, columns, rows;
@@ -70,5 +71,6 @@ TEST(MultijitterSampler, BadSampleCount) {
                                  "and 2^30"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Cells are chosen in proportion to their weights (chi-square at 0.1%),
 // never where the weight is zero, and the density is weight / mean weight.
@@ -46,5 +47,6 @@ TEST(PiecewiseConstant2D, AllZeroWeightsAreRefused) {
   EXPECT_THROW(PiecewiseConstant2D(zeros, 3, 2), std::invalid_argument);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

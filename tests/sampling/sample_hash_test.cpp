@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(HashedPermutation, IsABijectionForEverySeed) {
   for (const uint32_t n : {1u, 2u, 3u, 5u, 7u, 16u, 36u, 100u, 1000u})
@@ -51,5 +52,6 @@ TEST(DimensionHash, EqualsTheHashOfTheDimensionAcrossTheTable) {
       ASSERT_EQ(dimension_hash(sample, d), finalise(sample ^ finalise(d * 0x9e3779b97f4a7c15ULL))) << "dimension " << d;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

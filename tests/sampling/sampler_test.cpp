@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::vector<float> draw(Sampler& s, SampleKey key, uint64_t index, uint64_t seed, int n) {
   s.start_sample(key, index, seed);
@@ -278,5 +279,6 @@ INSTANTIATE_TEST_SUITE_P(Samplers, EverySampler,
                          testing::Values("independent", "ldsampler", "stratified", "multijitter", "halton"),
                          [](const testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(StratifiedSampler, EveryBlockStratifiesEveryDimension) {
   for (const auto& [count, side] : {std::pair{16, 4}, std::pair{10, 4}, std::pair{9, 3}, std::pair{1, 1}}) {
@@ -61,5 +62,6 @@ TEST(StratifiedSampler, BadSampleCount) {
                                  "and 2^30"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

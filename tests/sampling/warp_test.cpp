@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::Chi2Options;
 using test::Chi2Result;
@@ -428,5 +429,6 @@ TEST(Chi2Helper, AcceptsFailuresAccountedForByPdf) {
   EXPECT_GT(r.p_value, kAlpha) << r.report;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string scene_with(const std::string& shapes) { return "<scene version='3.0.0'>" + shapes + "</scene>"; }
 
@@ -126,5 +127,6 @@ TEST_P(SelfIntersection, LeavingRaysDoNotRehitTheirSurface) {
 
 INSTANTIATE_TEST_SUITE_P(Scales, SelfIntersection, testing::Values(1e-3f, 1.0f, 1e4f));
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -84,5 +85,6 @@ TEST(SceneFeatures, LightTreeForTwoBoundedEmittersOrMore) {
   EXPECT_THAT(describe(forced), HasSubstr("light selection: light tree (forced by the render settings)\n"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

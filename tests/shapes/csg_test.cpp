@@ -19,6 +19,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -517,5 +518,6 @@ TEST(CsgShape, TheShippedSceneRenders) {
   for (const float v : pixels) ASSERT_TRUE(std::isfinite(v));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -199,5 +200,6 @@ TEST(CurveShape, ConvexTubeUnderAUniformSkyShowsItsAlbedo) {
   EXPECT_LT(se, 0.01);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

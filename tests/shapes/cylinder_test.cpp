@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -66,5 +67,6 @@ TEST(CylinderShape, RefusesBadParameters) {
               HasSubstr("a cylinder's to_world may only translate, rotate and scale uniformly"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -77,5 +78,6 @@ TEST(MeshFileShape, MeshesWithoutNormalsAreShadedSmoothUnlessFaceNormalsAsked) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

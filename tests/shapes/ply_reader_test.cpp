@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -163,5 +164,6 @@ TEST(PlyReader, AStopRequestInterruptsTheRead) {
   EXPECT_EQ(read_ply(kTriangleHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").indices.size(), 3u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

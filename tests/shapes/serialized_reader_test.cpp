@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using test::MeshSpec;
 using test::put;
@@ -162,5 +163,6 @@ TEST(SerializedReader, AStopRequestInterruptsTheRead) {
   EXPECT_EQ(read_serialized(bytes, 0).indices.size(), 6u);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using V3 = std::array<double, 3>;
 
@@ -121,5 +122,6 @@ TEST(ShadingNormalsSeen, AnInstanceScaledUnevenly) {
                  0.6, true);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

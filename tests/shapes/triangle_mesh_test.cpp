@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using Vec3d = std::array<double, 3>;
 
@@ -144,5 +145,6 @@ TEST(TriangleMesh, AreaSamplesLieOnTheTriangle) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Two triangles share vertex 0: one in the plane z = 0 (normal +z, a right
 // angle at the vertex), one tilted (normal (1, 0, -1)/sqrt(2), an angle of
@@ -65,5 +66,6 @@ TEST(VertexNormals, DegenerateTrianglesAndUnusedVerticesGiveZero) {
   for (const Vec3& n : smooth_vertex_normals(mesh)) EXPECT_EQ(squared_length(n), 0.0f);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -80,5 +81,6 @@ TEST(Dispersion, BadModelsAreRefused) {
               HasSubstr("unknown dispersion model 'abbe' (known: cauchy, sellmeier)"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -27,6 +27,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -255,5 +256,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, DispersiveFurnace, testing::ValuesIn(kFurn
                                                                                                     : "_smooth");
                          });
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

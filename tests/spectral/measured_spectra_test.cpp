@@ -28,6 +28,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -164,5 +165,6 @@ TEST(MeasuredSpectra, BadConductorSpectraAreRefused) {
               HasSubstr("test.xml:2: <spectrum>: value -0.200000 at 500.000000 nm is negative"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -32,6 +32,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -257,5 +258,6 @@ TEST_P(Prism, SpreadsWavelengthsBySnellsLaw) {
 INSTANTIATE_TEST_SUITE_P(Integrators, Prism, testing::ValuesIn(kPrismRenders),
                          [](const testing::TestParamInfo<PrismRender>& info) { return std::string(info.param.name); });
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The estimate's mean over n stratified numbers of spectral_to_rgb(f(w)).
 template <class Lifted>
@@ -62,5 +63,6 @@ TEST(RgbLift, BlackIsZero) {
   EXPECT_EQ(lift_illuminant(Color(), w), Color());
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const char* const kMaterials[] = {
     "<bsdf type='dielectric'><float name='int_ior' value='1.5'/></bsdf>",
@@ -114,5 +115,6 @@ TEST(SpectralMaterials, GoldKeepsItsHue) {
   EXPECT_GT(gold.mean[0], gold.mean[2]);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

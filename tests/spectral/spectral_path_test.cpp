@@ -34,6 +34,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using ::testing::HasSubstr;
 
@@ -221,5 +222,6 @@ TEST(SpectralPath, TheAnalysisSaysWhichModeAndWhy) {
   EXPECT_THAT(describe(job.scene()->features()), HasSubstr("spectral transport: yes (forced by the render settings)"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

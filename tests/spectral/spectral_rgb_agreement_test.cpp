@@ -29,6 +29,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRegionsPerSide = 4, kRuns = 8;
 
@@ -87,5 +88,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, SpectralRgbAgreement, testing::ValuesIn(kC
                            return name;
                          });
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 TEST(Wavelengths, VisibleDensityIntegratesToOne) {
   const int n = 100000;
@@ -107,5 +108,6 @@ TEST(Wavelengths, ALineAt580NmLandsOnTheTablesChromaticity) {
   EXPECT_NEAR(xyz[1], 0.87 / 106.857, 2e-4);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -26,6 +26,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 32;
 const char* const kScenes[] = {"cornell-box",       "cornell-box-glass",    "cornell-box-mirror", "cornell-box-glossy",
@@ -68,5 +69,6 @@ TEST_P(BidirectionalAgreement, RegionMeansMatchPath) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BidirectionalAgreement, testing::ValuesIn(kScenes), test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 16, kRuns = 24;
 
@@ -116,5 +117,6 @@ TEST(LightPathHardCases, FiniteAndAgreeingAcrossIntegrators) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRegionsPerSide = 4, kRuns = 16;
 const char* const kScenes[] = {"cornell-box-fog", "cornell-box-smoke", "cornell-box-subsurface"};
@@ -107,5 +108,6 @@ INSTANTIATE_TEST_SUITE_P(Boxes, BoxAgreement,
                            return name;
                          });
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 LoadedScene tilted_plane_under(const std::string& sensor) {
   return test::scene_from_xml(
@@ -239,5 +240,6 @@ TEST(PathDensity, AScatteringEventOnThePreviousVertexEndsTheSubpath) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -30,6 +30,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const char* const kMixedScene =
     "<scene version='3.0.0'><sensor type='perspective'><float name='fov' value='60'/>"
@@ -301,5 +302,6 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
               paths, merges, ratios, through_coat);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Energies recorded at points drawn from a lopsided density: most near
 // (0.8, 0.3), some spread uniformly, none in the square's top-left eighth.
@@ -223,5 +224,6 @@ TEST(FixedPointSum, IsTheSameInAnyOrderAndExactToItsResolution) {
   EXPECT_EQ(ignored.value(), 0);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

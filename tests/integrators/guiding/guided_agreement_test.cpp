@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRegionsPerSide = 6, kRuns = 32;
 // 96 samples per pixel: the six training passes (63) and 33 samples by
@@ -56,5 +57,6 @@ TEST_P(GuidedAgreement, RegionMeansMatchPath) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GuidedAgreement, testing::ValuesIn(kScenes), test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

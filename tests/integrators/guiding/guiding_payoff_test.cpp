@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kSide = 128;
 
@@ -135,5 +136,6 @@ TEST(GuidingPayoff, IsTheSameFromAnyThreads) {
   EXPECT_EQ(a.unguided_cost, b.unguided_cost);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

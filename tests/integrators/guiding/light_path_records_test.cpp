@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A 2 m floor (normal +y), a 0.6 m reflector 1 m above it facing down, and
 // between them a 0.2 m light facing up: one-sided, it lights the reflector
@@ -75,5 +76,6 @@ TEST(LightPathRecords, RecordNothingWhereNoLightArrivesAfterABounce) {
   for (int b = 0; b < kNormalBuckets; ++b) EXPECT_TRUE(tree.region_at({0, 0, 0}).guides[b].sampling.empty()) << b;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Bounds3 unit_box() {
   Bounds3 b;
@@ -118,5 +119,6 @@ TEST(GuidingTree, TheMemoryCapStopsRefinementAndSaysSo) {
   EXPECT_FALSE(tree.capped());
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -34,6 +34,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRes = 24, kRuns = 16;
 const char* const kScenes[] = {"cornell-box-glass", "cornell-box-mirror"};
@@ -88,5 +89,6 @@ TEST_P(EdgeGathering, PixelsWhereSurfacesMeetAgreeWithBdpt) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EdgeGathering, testing::ValuesIn(kScenes), test::scene_test_name);
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

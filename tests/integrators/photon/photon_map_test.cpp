@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::vector<Photon> random_photons(int n, uint32_t seed, float extent) {
   std::mt19937 rng(seed);
@@ -148,5 +149,6 @@ TEST(PhotonMap, EmptyMapAndNegativeCoordinates) {
   EXPECT_THROW(PhotonMap(photons, 0.0f), std::invalid_argument);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

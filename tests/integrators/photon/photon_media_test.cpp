@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kRuns = 8;
 
@@ -42,5 +43,6 @@ TEST(PhotonInMedia, AgreesWithPathRegionByRegion) {
         << ph[i].standard_error << ", path " << path[i].mean << " +- " << path[i].standard_error;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

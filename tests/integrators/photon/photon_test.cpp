@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -166,5 +167,6 @@ TEST(Photon, BadParameters) {
               HasSubstr("test.xml:2: parameter 'radius' of integrator 'photon': must not be negative"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -54,6 +54,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kA = 0.02, kH = 0.15, kRho = 0.5, kIntensity = 1;
 constexpr double kRadius = 0.2, kAlpha = 0.3;
@@ -318,5 +319,6 @@ TEST(VcmMergeBias, FallsWithTheIterationsAsTheRadiusSchedulePredicts) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -99,5 +100,6 @@ TEST(Sppm, NonFiniteEstimatesAreCountedNotWritten) {
   EXPECT_THAT(stats.summary, testing::StartsWith("iterations=2, rms radius="));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Vec3 at(const Element& e, Vec2 b) { return e.p[0] * (1 - b.x - b.y) + e.p[1] * b.x + e.p[2] * b.y; }
 
@@ -66,5 +67,6 @@ TEST(ElementMesh, ChildAtFindsTheSamePoint) {
   for (int c = 0; c < 4; ++c) EXPECT_GT(found[c], 300) << c;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

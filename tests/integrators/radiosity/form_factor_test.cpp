@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -175,5 +176,6 @@ TEST(ElementFormFactor, ReciprocityHoldsAsElementsShrink) {
   EXPECT_NEAR(ab / ba, 1, size_over_distance * size_over_distance);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica

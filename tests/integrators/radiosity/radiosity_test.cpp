@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using testing::HasSubstr;
 
@@ -123,5 +124,6 @@ TEST(Radiosity, RejectsBadParameters) {
   EXPECT_THAT(error("<integer name='gather' value='-1'/>"), HasSubstr("must be between 0 and 4096"));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
 }  // namespace
 }  // namespace caustica
