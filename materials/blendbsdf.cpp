@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class BlendBsdf final : public Bsdf {
  public:
@@ -91,6 +92,8 @@ class BlendBsdf final : public Bsdf {
   std::optional<CombinedTraits> traits_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(BlendBsdf, "bsdf", "blendbsdf",

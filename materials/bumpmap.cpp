@@ -34,6 +34,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr float kStep = 1.0f / 1024;
 
@@ -65,6 +66,8 @@ class BumpMapBsdf final : public PerturbedFrameBsdf {
   float scale_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(BumpMapBsdf, "bsdf", "bumpmap",

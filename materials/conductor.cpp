@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ConductorBsdf final : public DeltaBsdf {
  public:
@@ -57,6 +58,8 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ConductorBsdf, "bsdf", "conductor", params(), {});

@@ -42,6 +42,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class DielectricBsdf final : public DeltaBsdf {
  public:
@@ -84,6 +85,8 @@ class DielectricBsdf final : public DeltaBsdf {
   DielectricInterface interface_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

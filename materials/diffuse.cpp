@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class DiffuseBsdf final : public Bsdf {
  public:
@@ -51,6 +52,8 @@ class DiffuseBsdf final : public Bsdf {
   std::shared_ptr<Texture> reflectance_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DiffuseBsdf, "bsdf", "diffuse",

@@ -25,6 +25,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class MaskBsdf final : public Bsdf {
  public:
@@ -75,6 +76,8 @@ class MaskBsdf final : public Bsdf {
   std::shared_ptr<Bsdf> nested_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(MaskBsdf, "bsdf", "mask",

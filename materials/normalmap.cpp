@@ -28,6 +28,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class NormalMapBsdf final : public PerturbedFrameBsdf {
  public:
@@ -47,6 +48,8 @@ class NormalMapBsdf final : public PerturbedFrameBsdf {
   std::shared_ptr<Texture> normals_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(NormalMapBsdf, "bsdf", "normalmap",

@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class NullBsdf final : public Bsdf {
  public:
@@ -29,6 +30,8 @@ class NullBsdf final : public Bsdf {
   Color albedo(const BsdfContext&, Vec3) const override { return {}; }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(NullBsdf, "bsdf", "null", {}, {});

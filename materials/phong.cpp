@@ -36,6 +36,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The mirror direction of w about the normal +z.
 Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
@@ -128,6 +129,8 @@ class PhongBsdf final : public Bsdf {
   float exponent_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PhongBsdf, "bsdf", "phong",

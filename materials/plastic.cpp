@@ -41,6 +41,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Vec3 mirror(Vec3 w) { return {-w.x, -w.y, w.z}; }
 
@@ -116,6 +117,8 @@ class PlasticBsdf final : public Bsdf {
   float fdr_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -56,6 +56,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class PrincipledBsdf final : public Bsdf {
  public:
@@ -303,6 +304,8 @@ std::vector<ParamSpec> params() {
           {"clearcoat_sampling_rate", ParamType::Float, "1", "relative rate of sampling the clearcoat"}};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PrincipledBsdf, "bsdf", "principled", params(), {});

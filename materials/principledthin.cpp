@@ -43,6 +43,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Vec3 mirrored(Vec3 w) { return {w.x, w.y, -w.z}; }
 
@@ -227,6 +228,8 @@ std::vector<ParamSpec> params() {
            "relative rate of sampling the diffuse light through"}};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PrincipledThinBsdf, "bsdf", "principledthin", params(), {});

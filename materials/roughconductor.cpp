@@ -34,6 +34,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The normal reflecting wo into wi, both above the surface; +z where the
 // two are opposite grazing directions.
@@ -117,8 +118,10 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughConductorBsdf, "bsdf", "roughconductor", params(), {});
+CAUSTICA_REGISTER_PLUGIN(RoughConductorBsdf, "bsdf", "roughconductor", CAUSTICA_UNITY_ID::params(), {});
 
 }  // namespace caustica

@@ -49,6 +49,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class RoughDielectricBsdf final : public Bsdf {
  public:
@@ -177,8 +178,10 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric", params(), {});
+CAUSTICA_REGISTER_PLUGIN(RoughDielectricBsdf, "bsdf", "roughdielectric", CAUSTICA_UNITY_ID::params(), {});
 
 }  // namespace caustica

@@ -56,6 +56,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class RoughPlasticBsdf final : public Bsdf {
  public:
@@ -184,8 +185,10 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(RoughPlasticBsdf, "bsdf", "roughplastic", params(), {});
+CAUSTICA_REGISTER_PLUGIN(RoughPlasticBsdf, "bsdf", "roughplastic", CAUSTICA_UNITY_ID::params(), {});
 
 }  // namespace caustica

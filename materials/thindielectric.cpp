@@ -26,6 +26,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ThinDielectricBsdf final : public DeltaBsdf {
  public:
@@ -62,6 +63,8 @@ class ThinDielectricBsdf final : public DeltaBsdf {
   DielectricInterface interface_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

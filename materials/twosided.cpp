@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Vec3 flip(Vec3 w) { return {w.x, w.y, -w.z}; }
 
@@ -63,6 +64,8 @@ class TwoSidedBsdf final : public Bsdf {
   std::optional<CombinedTraits> traits_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(TwoSidedBsdf, "bsdf", "twosided", {}, {"bsdf"});

@@ -12,7 +12,7 @@ seconds="${1:-20}"
 seed="${2:-0}"
 scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DCAUSTICA_FUZZ=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DCAUSTICA_FUZZ=ON -DCAUSTICA_UNITY_ENGINE=ON \
   -DCAUSTICA_FUZZ_SECONDS="$seconds" -DCAUSTICA_FUZZ_SEED="$seed" >/dev/null
 cmake --build build-fuzz --target fuzzers --parallel "$(nproc)"
 ctest --test-dir build-fuzz -R '^fuzz-' --output-on-failure --timeout $((seconds + 300)) -j 2

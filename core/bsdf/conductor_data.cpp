@@ -13,6 +13,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct NamedConductor {
   const char* name;
@@ -48,6 +49,8 @@ std::pair<std::shared_ptr<const SampledSpectrum>, std::shared_ptr<const SampledS
           std::make_shared<const SampledSpectrum>(std::move(k))};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::optional<ConductorIor> named_conductor(const std::string& name) {
@@ -80,6 +83,7 @@ std::vector<std::string> conductor_names() {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 ConductorIor absolute_ior(const Properties& props) {
   const std::string material = props.get_string("material");
@@ -111,6 +115,8 @@ ConductorIor absolute_ior(const Properties& props) {
   return *known;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 ConductorIor conductor_ior(const Properties& props) {

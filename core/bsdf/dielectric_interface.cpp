@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::optional<Dispersion> read_dispersion(const Properties& props) {
   const std::string text = props.get_string("dispersion");
@@ -29,6 +30,8 @@ std::optional<Dispersion> read_dispersion(const Properties& props) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 DielectricInterface::DielectricInterface(const Properties& props, bool reads_dispersion)

@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Published refractive indices (sodium D line, room temperature).
 const std::pair<const char*, float> kIors[] = {
@@ -20,6 +21,8 @@ const std::pair<const char*, float> kIors[] = {
     {"bk7", 1.5046f},      {"sodium chloride", 1.544f},  {"amber", 1.55f},
     {"pet", 1.575f},       {"diamond", 2.419f}};
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::optional<float> named_ior(const std::string& name) {

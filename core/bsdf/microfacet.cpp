@@ -56,6 +56,7 @@ float MicrofacetDistribution::G(Vec3 wo, Vec3 wi, Vec3 m) const {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The slope x of a visible Beckmann microfacet along the azimuth of a
 // direction at polar angle theta, in the configuration stretched to
@@ -96,6 +97,8 @@ Vec3 normal_from_slopes(double sx, double sy) {
   return {float(-sx * inv), float(-sy * inv), float(inv)};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Vec3 MicrofacetDistribution::sample(Vec3 wi, Vec2 u) const {

@@ -23,6 +23,7 @@ std::vector<ParamSpec> microfacet_params(bool anisotropic, bool textured) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 MicrofacetDistribution::Type distribution_type(const Properties& props) {
   try {
@@ -39,6 +40,8 @@ void check_pairing(const Properties& props) {
   if (has_u != has_v) throw props.error(has_u ? "alpha_u" : "alpha_v", "alpha_u and alpha_v go together");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MicrofacetRoughness::MicrofacetRoughness(const Properties& props) : type_(distribution_type(props)) {

@@ -77,6 +77,7 @@ Vec3 Gtr1::sample(Vec2 u) const {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float smith_ggx_g1(Vec3 w, Vec3 m, float alpha) {
   if (dot(w, m) * w.z <= 0) return 0;
@@ -84,6 +85,8 @@ float smith_ggx_g1(Vec3 w, Vec3 m, float alpha) {
   return 2 / (1 + std::sqrt(1 + alpha * alpha * t2));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float clearcoat_G(Vec3 wo, Vec3 wi, Vec3 m) { return smith_ggx_g1(wo, m, 0.25f) * smith_ggx_g1(wi, m, 0.25f); }

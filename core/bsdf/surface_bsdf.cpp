@@ -5,6 +5,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Reflection or transmission as the geometry sees it must match what the
 // shading frame says, or a path could cross a surface through a reflection
@@ -14,6 +15,8 @@ bool sides_agree(Vec3 wo_world, Vec3 wi_world, Vec3 wo, Vec3 wi, Vec3 ng) {
   return geometric_reflection == same_hemisphere(wo, wi);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float SurfaceBsdf::shading_correction(Vec3 wo_world, Vec3 wi_world) const {

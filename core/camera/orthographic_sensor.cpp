@@ -18,6 +18,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Every ray travels along `forward`: the importance is a delta in
 // direction times 1 / A per unit area of the film (A its rendered window's
@@ -105,6 +106,8 @@ std::vector<ParamSpec> orthographic_params() {
   return params;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(OrthographicSensor, "sensor", "orthographic", orthographic_params(), {"film", "sampler"});

@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A 35 mm-equivalent focal length ("50mm" or "50") as a field of view
 // across the diagonal of 36 x 24 mm film, as Mitsuba reads it.
@@ -22,6 +23,8 @@ float focal_length_fov(const Properties& props) {
   return float(2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / (2 * f)) * 180 / M_PI);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Vec2 field_of_view_tangents(const Properties& props, float w, float h) {

@@ -25,6 +25,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Camera space has the lens in the plane z = 0, centred on the origin. A
 // ray from lens point l toward the point the pinhole ray of a raster
@@ -165,6 +166,8 @@ std::vector<ParamSpec> projective_params(std::vector<ParamSpec> lens) {
   return params;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PerspectiveSensor, "sensor", "perspective",

@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 template <class T>
 std::shared_ptr<T> child_or_default(const Properties& props, const char* category, const char* name) {
@@ -16,6 +17,8 @@ std::shared_ptr<T> child_or_default(const Properties& props, const char* categor
   return Registry::instance().create_default<T>(category, name, props.where());
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Sensor::Sensor(const Properties& props)

@@ -20,6 +20,7 @@ namespace OCIO = OCIO_NAMESPACE;
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 OCIO::ConstCPUProcessorRcPtr make_aces_processor() {
   auto group = OCIO::GroupTransform::Create();
@@ -59,6 +60,8 @@ class AcesTonemap final : public ToneOperator {
   OCIO::ConstCPUProcessorRcPtr processor_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(AcesTonemap, "tonemap", "aces", tone_operator_params({}), {});

@@ -11,6 +11,7 @@ namespace OCIO = OCIO_NAMESPACE;
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // OpenColorIO's own messages for an unknown display, view or look do not
 // say what the config offers; these name `wanted` and list what it has.
@@ -24,6 +25,8 @@ void require_named(const std::string& wanted, int count, Name&& name, const std:
   throw std::runtime_error(problem + " (it has " + (list.empty() ? "none" : list) + ")");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::filesystem::path default_ocio_config() {

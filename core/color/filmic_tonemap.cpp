@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class FilmicTonemap final : public ToneOperator {
  public:
@@ -38,6 +39,8 @@ class FilmicTonemap final : public ToneOperator {
   float bias_, white_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(FilmicTonemap, "tonemap", "filmic",

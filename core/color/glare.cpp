@@ -32,6 +32,7 @@ const char* glare_mode_name(GlareMode mode) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Large enough for any light, small enough that sums over a whole image
 // in the transforms stay finite.
@@ -39,6 +40,8 @@ constexpr float kLargestRadiance = 1e30f;
 
 float finite_radiance(float v) { return v > 0 ? std::min(v, kLargestRadiance) : 0.0f; }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 bool apply_glare(std::vector<float>& rgb, int width, int height, const Glare& glare) {

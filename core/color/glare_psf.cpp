@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kCoreWidth = 0.02;  // degrees: f0's width and f1's, f2's offset
 double core(double theta) { return 2.61e6 * std::exp(-(theta / kCoreWidth) * (theta / kCoreWidth)); }
@@ -41,6 +42,8 @@ double tails_over_pixel(int dx, int dy, double d) {
   return sum * cell * cell;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 double glare_psf(double theta_degrees) { return 0.384 * core(theta_degrees) + tails(theta_degrees); }

@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The near part's share of the kernel at distance rho: all of it up to
 // 96 pixels, none from 224 on (inside the near reach), smoothstep between.
@@ -23,6 +24,8 @@ double near_share(double rho) {
   return t * t * (3 - 2 * t);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 BlockNeighbours block_neighbours(int i, int blocks) {

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class NoneTonemap final : public ToneOperator {
  public:
@@ -19,6 +20,8 @@ class NoneTonemap final : public ToneOperator {
   }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(NoneTonemap, "tonemap", "none", tone_operator_params({}), {});

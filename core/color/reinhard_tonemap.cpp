@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ReinhardTonemap final : public ToneOperator {
  public:
@@ -67,6 +68,8 @@ class ReinhardTonemap final : public ToneOperator {
   float key_, white_, burn_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Per 5 nm sample: where it lies on the unit wavelength axis, and the
 // Rec.709 colour a reflectance of 1 there alone adds.
@@ -81,6 +82,8 @@ bool solve3(double a[3][3], std::array<double, 3> b, std::array<double, 3>& x) {
   return true;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::array<double, 3> sigmoid_reflectance_rgb(const std::array<double, 3>& c) {

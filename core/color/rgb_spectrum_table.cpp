@@ -15,6 +15,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr char kMagic[8] = {'C', 'R', 'G', 'B', 'S', 'P', 'E', 'C'};
 
@@ -35,6 +36,8 @@ std::array<double, 3> entry_colour(int largest, double z, double x, double y) {
   return rgb;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 RgbSpectrumTable RgbSpectrumTable::compute(int resolution) {

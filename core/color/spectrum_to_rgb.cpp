@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 double parse_number(std::string_view text, const std::string& what) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
@@ -45,6 +46,8 @@ void check_band(const SampledSpectrum& s, const std::string& what) {
                                 " nm); a spectrum needs two or more, between which it is interpolated");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 SampledSpectrum parse_spectrum_pairs(const std::string& text) {

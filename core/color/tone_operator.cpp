@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 GlareMode glare_parameter(const Properties& props) {
   try {
@@ -17,6 +18,8 @@ GlareMode glare_parameter(const Properties& props) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 ToneOperator::ToneOperator(const Properties& props)

@@ -3,10 +3,13 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr size_t kMaxQuoted = 80;
 constexpr size_t kMaxProblem = 2000;
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string shorten_quoted(std::string_view problem) {

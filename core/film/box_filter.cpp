@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class BoxFilter final : public ReconstructionFilter {
  public:
@@ -18,6 +19,8 @@ class BoxFilter final : public ReconstructionFilter {
   float eval(float x) const override { return std::abs(x) <= radius() ? 1.0f : 0.0f; }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(BoxFilter, "rfilter", "box", {{"radius", ParamType::Float, "0.5", "half-width in pixels"}},

@@ -124,6 +124,7 @@ void FilmBuffer::variance_pixel(size_t p, float* out) const {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Three floats whose sum is d: each takes what the previous left over.
 void split_double(double d, float* out) {
@@ -149,6 +150,8 @@ void add_parts(double& s, double value, double) { s += value; }
 // range of floats wherever the value does.
 constexpr int kRestScale = 64;
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 template <class Self, class F>
@@ -216,11 +219,14 @@ void FilmBuffer::add_raw(std::span<const float> raw, uint64_t splat_paths) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // pack()'s header: whether splats follow, the splat paths, the dropped
 // samples and the first of them (integers below 2^53, exact as doubles).
 constexpr size_t kPackHeader = 6;
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void FilmBuffer::add(const FilmBuffer& other) {

@@ -7,6 +7,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // 8192 x 8192; the accumulation buffers take about 100 bytes a pixel.
 constexpr int64_t kMaxPixels = int64_t(1) << 26;
@@ -17,6 +18,8 @@ int in_range(const Properties& props, const char* name, int64_t value, int64_t l
   return int(value);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 FilmGeometry read_film_geometry(const Properties& props) {

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class GaussianFilter final : public ReconstructionFilter {
  public:
@@ -24,6 +25,8 @@ class GaussianFilter final : public ReconstructionFilter {
   float stddev_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(GaussianFilter, "rfilter", "gaussian",

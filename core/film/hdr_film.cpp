@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 FilmOutput read_output(const Properties& props) {
   FilmOutput out;
@@ -57,6 +58,8 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(HdrFilm, "film", "hdrfilm", params(), {"rfilter"});

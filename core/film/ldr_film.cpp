@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 FilmOutput read_output(const Properties& props) {
   FilmOutput out;
@@ -60,8 +61,10 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
-CAUSTICA_REGISTER_PLUGIN(LdrFilm, "film", "ldrfilm", params(), {"rfilter"});
+CAUSTICA_REGISTER_PLUGIN(LdrFilm, "film", "ldrfilm", CAUSTICA_UNITY_ID::params(), {"rfilter"});
 
 }  // namespace caustica

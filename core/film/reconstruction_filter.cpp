@@ -7,8 +7,11 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 constexpr int kCells = 256;
 constexpr int kSubsamples = 16;
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void ReconstructionFilter::init(float radius) {

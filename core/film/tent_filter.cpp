@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class TentFilter final : public ReconstructionFilter {
  public:
@@ -21,6 +22,8 @@ class TentFilter final : public ReconstructionFilter {
   float eval(float x) const override { return std::max(0.0f, 1 - std::abs(x) / radius()); }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(TentFilter, "rfilter", "tent", {{"radius", ParamType::Float, "1", "half-width in pixels"}},

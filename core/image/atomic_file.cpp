@@ -12,6 +12,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The temporary file being written, as a signal handler can read it: the
 // path is complete before `pending` is set, and only unlink() reads it.
@@ -45,6 +46,8 @@ void remove_stale_temporaries(const std::filesystem::path& folder) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void remove_pending_temporary_file() {

@@ -20,6 +20,7 @@ int fft_length(int n) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // FFTW's planner is not thread-safe; executing a plan is.
 std::mutex& planner_mutex() {
@@ -65,6 +66,8 @@ class RealTransforms {
   fftwf_plan forward_ = nullptr, inverse_ = nullptr;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void convolve(std::vector<float>& pixels, int width, int height, int channels, const EvenKernel& kernel) {

@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::array<int, 3> channel_indices(const Image& image, const char* prefix, const char* what) {
   std::array<int, 3> out;
@@ -47,6 +48,8 @@ bool has_variance(const Image& image) {
          image.channel_index("variance.B") >= 0;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 EstimatedError estimated_error(const Image& image, double rel_epsilon) {

@@ -18,6 +18,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Opens `path` for `spec`, lets `write` write the pixels (whole, or a band
 // of rows at a time) and closes it; any failure names the file.
@@ -46,6 +47,8 @@ void write_pfm(const std::filesystem::path& path, int width, int height, int cha
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 ImageRows rows_of(const Image& image) {
@@ -59,6 +62,7 @@ ImageRows rows_of(const Image& image) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Rows per band: about a million values, at least one row.
 int band_rows(const ImageRows& rows) {
@@ -77,6 +81,8 @@ void for_each_band(const ImageRows& rows, F&& f) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 ExtremeValues count_extreme_values(const ImageRows& rows) {

@@ -35,6 +35,7 @@ double metadata_number(const RenderFile& part, const std::string& key) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The number of samples in each pixel of a render.
 std::vector<double> sample_counts(const RenderFile& part) {
@@ -54,6 +55,8 @@ std::vector<double> sample_counts(const RenderFile& part) {
   return counts;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void check_same_render(const RenderFile& first, const RenderFile& part) {
@@ -68,6 +71,7 @@ void check_same_render(const RenderFile& first, const RenderFile& part) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 enum class Rule { Mean, Variance, Count };
 
@@ -77,6 +81,8 @@ Rule rule_for(const std::string& channel) {
   return Rule::Mean;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::vector<std::string> render_seeds(const RenderFile& render) {
@@ -96,6 +102,7 @@ RenderFile read_render(const std::string& path) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The samples [first, end) a render of one seed holds, where its metadata
 // says so; a merge of several seeds holds no one range.
@@ -120,6 +127,8 @@ std::string shared_seed_problem(const RenderFile& a, const RenderFile& b) {
          "them with different seeds to merge them as independent renders";
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 RenderFile merge_renders(const std::vector<RenderFile>& parts) {

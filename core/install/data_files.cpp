@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The installed data folder beside the binary that holds this code, if
 // there is one.
@@ -25,6 +26,8 @@ std::optional<std::filesystem::path> installed_folder() {
   return std::nullopt;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::filesystem::path data_file(const std::string& name, const std::filesystem::path& build_path) {

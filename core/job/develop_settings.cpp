@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // An ldrfilm's tone mapping as one of caustica's operators.
 std::shared_ptr<ToneOperator> ldr_tone_operator(const LdrDevelopment& d) {
@@ -24,6 +25,8 @@ std::shared_ptr<ToneOperator> ldr_tone_operator(const LdrDevelopment& d) {
   return std::dynamic_pointer_cast<ToneOperator>(info->create(props));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Developer make_developer(const DevelopSettings& settings, const std::shared_ptr<ToneOperator>& scene_default,

@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Nine significant digits: errors are tiny numbers.
 std::string number_text(double value) {
@@ -37,6 +38,8 @@ RenderFile in_channel_order(RenderFile part, const std::vector<std::string>& ord
   return part;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 RenderFile merge_parts(std::vector<RenderFile> parts) {

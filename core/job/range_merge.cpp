@@ -12,6 +12,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const char* const kFilm = "raw.";
 const char* const kAovs = "raw.aov.";
@@ -81,6 +82,8 @@ std::vector<SampleRange> sample_ranges(const RenderFile& part) {
   return out;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 bool has_raw_sums(const RenderFile& render) {

@@ -6,6 +6,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string shell_quoted(const std::string& arg) {
   const bool plain = !arg.empty() && std::all_of(arg.begin(), arg.end(), [](char c) {
@@ -18,6 +19,8 @@ std::string shell_quoted(const std::string& arg) {
   return quoted + "'";
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string replay_command(const std::string& scene, const std::vector<std::string>& defines,

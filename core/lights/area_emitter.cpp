@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class AreaEmitter final : public ShapeEmitter {
  public:
@@ -63,6 +64,8 @@ class AreaEmitter final : public ShapeEmitter {
   Color power() const override { return radiance_->mean() * (kPi * shape_->area()); }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(AreaEmitter, "emitter", "area",

@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ConstantEmitter final : public Emitter {
  public:
@@ -47,6 +48,8 @@ class ConstantEmitter final : public Emitter {
   SceneDisk disk_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ConstantEmitter, "emitter", "constant",

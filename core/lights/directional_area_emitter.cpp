@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class DirectionalAreaEmitter final : public ShapeEmitter {
  public:
@@ -51,6 +52,8 @@ class DirectionalAreaEmitter final : public ShapeEmitter {
   Color power() const override { return radiance_->mean() * shape_->area(); }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DirectionalAreaEmitter, "emitter", "directionalarea",

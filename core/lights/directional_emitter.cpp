@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class DirectionalEmitter final : public Emitter {
  public:
@@ -62,6 +63,8 @@ class DirectionalEmitter final : public Emitter {
   SceneDisk disk_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -28,6 +28,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class EnvmapEmitter final : public Emitter {
  public:
@@ -159,6 +160,8 @@ class EnvmapEmitter final : public Emitter {
   SceneDisk disk_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(EnvmapEmitter, "emitter", "envmap",

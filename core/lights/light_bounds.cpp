@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float sin_from_cos(float c) { return std::sqrt(std::max(0.0f, 1 - c * c)); }
 
@@ -18,6 +19,8 @@ float cos_of_excess(float cos_a, float cos_b) {
   return cos_a * cos_b + sin_from_cos(cos_a) * sin_from_cos(cos_b);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 LightBounds LightBounds::merge(const LightBounds& a, const LightBounds& b) {

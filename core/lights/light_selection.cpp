@@ -7,12 +7,15 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float power_weight(const Emitter& e) {
   const float p = e.power().average();
   return std::isfinite(p) && p > 0 ? p : 0;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 LightSelection::LightSelection(const std::vector<std::shared_ptr<Emitter>>& emitters) {

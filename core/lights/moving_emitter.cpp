@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The rotation alone of `m`: an infinitely far light cannot be moved or
 // scaled, only turned.
@@ -24,6 +25,8 @@ std::vector<Transform> turns_of(const std::vector<Transform>& keys) {
   return out;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MovingEmitter::MovingEmitter(std::shared_ptr<Emitter> still, const std::vector<Transform>& keys,

@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class PointEmitter final : public Emitter {
  public:
@@ -53,6 +54,8 @@ class PointEmitter final : public Emitter {
   Vec3 position_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -34,6 +34,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ProjectorEmitter final : public Emitter {
  public:
@@ -112,6 +113,8 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ProjectorEmitter, "emitter", "projector", params(), {});

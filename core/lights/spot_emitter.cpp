@@ -23,6 +23,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class SpotEmitter final : public Emitter {
  public:
@@ -119,6 +120,8 @@ class SpotEmitter final : public Emitter {
   float cutoff_ = 0, beam_ = 0, cos_cutoff_ = 1, cos_beam_ = 1, uv_scale_ = 0.5f;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -28,6 +28,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::set<std::string> kObjectTags = {"integrator", "sensor",  "film",    "sampler", "rfilter", "shape", "bsdf",
                                            "emitter",    "texture", "tonemap", "medium",  "phase",   "volume"};
@@ -506,6 +507,8 @@ LoadedScene instantiate(const XmlNode& root, const std::string& source,
           std::move(inst.warnings)};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 LoadedScene load_scene(const std::filesystem::path& file, const Defines& defines) {

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A number as value attributes hold them; a temperature may end in K.
 double number(const XmlNode& node, const std::string& text, const char* what) {
@@ -32,6 +33,8 @@ PropertyValue from_blackbody(const XmlNode& node, double kelvin, double scale) {
   return spectral(node, std::move(s));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 PropertyValue parse_spectrum_element(const XmlNode& node, const FileResolver& files) {

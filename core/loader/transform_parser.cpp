@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Transforms are read in double: a translation of 1e7 keeps its fraction.
 double number(const XmlNode& node, const char* attr, double fallback) {
@@ -66,6 +67,8 @@ Transform parse_step(const XmlNode& step) {
                    "unknown transform step <" + step.tag + "> (accepted: translate, rotate, scale, matrix, lookat)");
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Transform parse_transform(const XmlNode& node) {

@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct Rename {
   const char* tag;
@@ -130,6 +131,8 @@ std::optional<Color> parse_hex_colour(const std::string& text) {
   return Color(out[0], out[1], out[2]);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void upgrade_srgb(XmlNode& srgb) {

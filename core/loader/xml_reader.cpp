@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using Defines = std::map<std::string, std::string>;
@@ -257,6 +258,8 @@ class Reader {
   std::vector<std::string> notes_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string camel_to_snake(std::string_view name) {

@@ -7,6 +7,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 using Mat3 = std::array<std::array<double, 3>, 3>;
 
@@ -57,6 +58,8 @@ std::array<double, 4> slerp(const std::array<double, 4>& a, const std::array<dou
   return q;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 // Gram-Schmidt on the linear part's columns gives A = Q S with S upper

@@ -6,6 +6,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string text(double v) {
   char buffer[32];
@@ -13,6 +14,8 @@ std::string text(double v) {
   return buffer;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string key_times_problem(const std::vector<double>& times) {

@@ -77,6 +77,7 @@ Transform Transform::translate(Vec3d d) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 double length(Vec3d v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 Vec3d normalize(Vec3d v) {
@@ -86,6 +87,8 @@ Vec3d normalize(Vec3d v) {
 Vec3d cross(Vec3d a, Vec3d b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 Vec3d difference(Vec3d a, Vec3d b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Transform Transform::scale(Vec3d s) {

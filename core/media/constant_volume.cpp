@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ConstantVolume final : public Volume {
  public:
@@ -33,6 +34,8 @@ class ConstantVolume final : public Volume {
   Color value_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::shared_ptr<const Volume> make_constant_volume(Color value) { return std::make_shared<ConstantVolume>(value); }

@@ -30,6 +30,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class GridVolume final : public Volume {
  public:
@@ -128,6 +129,8 @@ class GridVolume final : public Volume {
   bool nearest_ = false;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -29,6 +29,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Ratio tracking plays Russian roulette once the transmittance falls below
 // kRouletteBelow, ending with probability kRouletteEnd.
@@ -136,6 +137,8 @@ class HeterogeneousMedium final : public Medium {
   std::optional<MajorantGrid> majorants_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float hg_density(float cos_theta, float g) {
   const float denom = 1 + g * g - 2 * g * cos_theta;
@@ -57,6 +58,8 @@ class HgPhase final : public PhaseFunction {
   float g_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(HgPhase, "phase", "hg",

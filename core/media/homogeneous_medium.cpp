@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Color exp_of(Color c) { return {std::exp(c.r), std::exp(c.g), std::exp(c.b)}; }
 
@@ -101,6 +102,8 @@ class HomogeneousMedium final : public Medium {
   Color sigma_t_, sigma_s_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class IsotropicPhase final : public PhaseFunction {
  public:
@@ -21,6 +22,8 @@ class IsotropicPhase final : public PhaseFunction {
   float mean_cosine() const override { return 0; }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(IsotropicPhase, "phase", "isotropic", {}, {});

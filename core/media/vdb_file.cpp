@@ -17,6 +17,7 @@ namespace caustica {
 #ifdef CAUSTICA_HAVE_OPENVDB
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // As for .vol files and images: 2^28 values at most.
 constexpr uint64_t kMaxValues = uint64_t(1) << 28;
@@ -30,6 +31,8 @@ void fill_dense(const GridType& grid, const openvdb::CoordBBox& box, Store&& sto
       for (int x = box.min().x(); x <= box.max().x(); ++x) store(i++, access.getValue(openvdb::Coord(x, y, z)));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 bool reads_vdb_files() { return true; }

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Reads little-endian fields in order, knowing how many bytes are left.
 class HeaderReader {
@@ -54,6 +55,8 @@ class HeaderReader {
   uint64_t size_ = 0, at_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string vdb_header_problem(const std::filesystem::path& file) {

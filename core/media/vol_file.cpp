@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The most voxels a grid may declare: 2^28, as for images.
 constexpr uint64_t kMaxVoxels = uint64_t(1) << 28;
@@ -28,6 +29,8 @@ float read_float(const char* p) {
   return f;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 VolGrid read_vol_file(const std::filesystem::path& file) {

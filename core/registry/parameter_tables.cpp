@@ -7,6 +7,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The scene file's elements in the order a scene usually names them.
 const char* const kCategories[] = {"integrator", "sensor", "film",    "rfilter", "sampler",
@@ -17,6 +18,8 @@ std::string cell(std::string text) {
   return text;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::string parameter_tables_markdown() {

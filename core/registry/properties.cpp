@@ -9,9 +9,12 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string plugin_name(const PluginInfo& info) { return info.category + " '" + info.name + "'"; }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void Properties::set(const std::string& name, PropertyValue value) {
@@ -84,6 +87,7 @@ PropertyValue Properties::value(const std::string& name, ParamType wanted) const
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string bool_text(bool b) { return b ? "true" : "false"; }
 
@@ -91,6 +95,8 @@ float as_float(const PropertyValue& v) {
   return v.kind == ValueKind::Integer ? float(std::get<int64_t>(v.value)) : float(std::get<double>(v.value));
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void Properties::record(const std::string& name, std::string text) const {

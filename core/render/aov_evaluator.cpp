@@ -11,6 +11,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
                                                   {"sh_normal", AovKind::ShNormal},
@@ -71,6 +72,8 @@ Vec2 uv_step(const Sensor& sensor, const Ray& ray, const SurfaceInteraction& si,
   return {float((c * pu - b * pv) / det), float((a * pv - b * pu) / det)};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::vector<AovSpec> parse_aov_list(const std::string& text) {

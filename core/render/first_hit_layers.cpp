@@ -11,6 +11,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::vector<AovSpec> standard_specs(bool alpha) {
   auto aovs = parse_aov_list("albedo:albedo,normal:sh_normal,depth:depth");
@@ -19,6 +20,8 @@ std::vector<AovSpec> standard_specs(bool alpha) {
   return aovs;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 FirstHitLayers::FirstHitLayers(const Scene& scene, uint64_t seed, uint64_t first_sample, const FilmBuffer& beauty,

@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 template <class Can>
 std::string integrators_that(const Can& can) {
@@ -17,6 +18,8 @@ std::string integrators_that(const Can& can) {
   return join_names(able);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void Integrator::check_scene(const Scene& scene) const {

@@ -11,6 +11,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class IterativeRun final : public IntegratorRun {
  public:
@@ -62,6 +63,8 @@ class IterativeRun final : public IntegratorRun {
   uint64_t last_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::unique_ptr<IntegratorRun> IterativeIntegrator::start(const Scene& scene, uint64_t seed) const {

@@ -16,6 +16,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class LightPathRun final : public IntegratorRun {
  public:
@@ -88,6 +89,8 @@ class LightPathRun final : public IntegratorRun {
   std::vector<Tile> tiles_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::unique_ptr<IntegratorRun> LightPathIntegrator::start(const Scene& scene, uint64_t seed) const {

@@ -12,6 +12,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class PixelRun final : public IntegratorRun {
  public:
@@ -74,6 +75,8 @@ class RadianceEstimator final : public PixelEstimator {
   const Scene& scene_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::unique_ptr<IntegratorRun> PixelIntegrator::start(const Scene& scene, uint64_t seed) const {

@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kPrimeCount = 1024;
 
@@ -109,6 +110,8 @@ class HaltonSampler final : public Sampler {
   uint32_t index_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(HaltonSampler, "sampler", "halton",

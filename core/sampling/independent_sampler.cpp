@@ -10,6 +10,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Dimensions one sample may consume before it would run into the next
 // sample's stream; far beyond any path's needs.
@@ -43,6 +44,8 @@ class IndependentSampler final : public Sampler {
   Pcg32 rng_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(IndependentSampler, "sampler", "independent",

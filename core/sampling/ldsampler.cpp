@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A 32-bit fraction to a float in [0, 1), exactly representable.
 float to_unit(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
@@ -57,6 +58,8 @@ class LowDiscrepancySampler final : public Sampler {
   uint32_t reversed_index_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(LowDiscrepancySampler, "sampler", "ldsampler",

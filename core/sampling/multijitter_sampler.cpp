@@ -18,6 +18,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 BlockGrid near_square_grid(const Properties& props) {
   const uint32_t n = JitteredBlockSampler::read_block_sample_count(props);
@@ -52,6 +53,8 @@ class MultijitterSampler final : public JitteredBlockSampler {
   }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(MultijitterSampler, "sampler", "multijitter",

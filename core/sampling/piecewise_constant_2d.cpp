@@ -5,6 +5,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::vector<float> row_sums(std::span<const float> weights, int width, int height) {
   std::vector<float> sums(size_t(height), 0.0f);
@@ -16,6 +17,8 @@ std::vector<float> row_sums(std::span<const float> weights, int width, int heigh
   return sums;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> weights, int width, int height)

@@ -15,6 +15,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 BlockGrid square_grid(const Properties& props) {
   const auto side = uint32_t(std::ceil(std::sqrt(double(JitteredBlockSampler::read_block_sample_count(props)))));
@@ -36,6 +37,8 @@ class StratifiedSampler final : public JitteredBlockSampler {
   }
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(StratifiedSampler, "sampler", "stratified",

@@ -15,6 +15,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kProbePoints = 256;
 
@@ -134,6 +135,8 @@ void decide_spectral(const Scene& scene, const std::vector<GivenSpectrum>& spect
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 SceneFeatures analyze_scene(const Scene& scene, bool textures, const std::vector<GivenSpectrum>& spectra) {

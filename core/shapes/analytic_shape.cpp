@@ -2,6 +2,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Ray ray_from(RTCRayN* rays, unsigned n, unsigned i) {
   return {{RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)},
@@ -44,6 +45,8 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 unsigned AnalyticShape::attach(RTCDevice device, RTCScene scene) const {

@@ -19,6 +19,7 @@ bool parse_csg_operation(const std::string& name, CsgOperation& out) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 bool inside(CsgOperation op, const std::vector<char>& in) {
   switch (op) {
@@ -32,6 +33,8 @@ bool inside(CsgOperation op, const std::vector<char>& in) {
   return false;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::vector<BoundaryCrossing> combine_crossings(CsgOperation op,

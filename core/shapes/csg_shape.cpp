@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Bounds3 overlap(const Bounds3& a, const Bounds3& b) { return {max(a.lo, b.lo), min(a.hi, b.hi)}; }
 
@@ -19,6 +20,8 @@ size_t primitives(const Shape& s) {
   return mesh ? std::max<size_t>(1, mesh->triangle_count()) : 1;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CsgShape::CsgShape(const Properties& props) {

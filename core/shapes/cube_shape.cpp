@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 MeshData unit_cube() {
   MeshData mesh;
@@ -37,6 +38,8 @@ class CubeShape final : public TriangleMesh {
   explicit CubeShape(const Properties& props) : TriangleMesh(unit_cube(), props, "cube") {}
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(CubeShape, "shape", "cube", mesh_shape_params(), {"bsdf", "emitter"});

@@ -8,11 +8,14 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 [[noreturn]] void fail(size_t line, const std::string& problem) {
   throw MeshFormatError("line " + std::to_string(line) + ": " + problem);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CurveData read_curves(const std::string& text, size_t min_points) {

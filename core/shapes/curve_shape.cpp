@@ -30,6 +30,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct CurveBasis {
   const char* name;
@@ -234,6 +235,8 @@ class BsplineCurveShape final : public CurveShape {
   explicit BsplineCurveShape(const Properties& props) : CurveShape(props, kBspline) {}
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(LinearCurveShape, "shape", "linearcurve",

@@ -22,6 +22,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Primitive ids of a crossing: the curved side, the end at p0, the end at p1.
 enum Part : uint32_t { kSide = 0, kEndAtP0 = 1, kEndAtP1 = 2 };
@@ -184,6 +185,8 @@ class CylinderShape final : public AnalyticShape {
   Frame frame_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(CylinderShape, "shape", "cylinder",

@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class DiskShape final : public AnalyticShape {
  public:
@@ -93,6 +94,8 @@ class DiskShape final : public AnalyticShape {
   float area_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(DiskShape, "shape", "disk",

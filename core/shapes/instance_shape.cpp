@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class InstanceShape final : public Shape {
  public:
@@ -130,6 +131,8 @@ class InstanceShape final : public Shape {
   double embree_rounding_ = 0, translation_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(InstanceShape, "shape", "instance",

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct Hit {
   double t;
@@ -57,6 +58,8 @@ void trace_all(RTCScene scene, Vec3 o, Vec3 d, std::vector<Hit>& hits) {
   rtcIntersect1(scene, &ctx.context, &rh);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MeshCrossings::MeshCrossings(RTCDevice device, const TriangleMesh& mesh) : scene_(rtcNewScene(device)) {

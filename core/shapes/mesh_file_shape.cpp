@@ -29,6 +29,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 MeshData flipped_tex_coords(MeshData mesh, bool flip) {
   if (flip)
@@ -103,6 +104,8 @@ class SerializedShape final : public TriangleMesh {
       : TriangleMesh(shaded(read_serialized_file(props), props), props, "serialized") {}
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ObjShape, "shape", "obj", file_params("true"), {"bsdf", "emitter"});

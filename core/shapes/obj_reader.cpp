@@ -12,6 +12,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The line of the file's face number `face`, counted from 0 over the `f`
 // lines of three corners or more (the reader drops the others), for error
@@ -61,6 +62,8 @@ void check_corner(const tinyobj::index_t& index, size_t positions, size_t uvs, s
   check("normal", index.normal_index, normals, true);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MeshData read_obj(const std::string& text) {

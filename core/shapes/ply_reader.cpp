@@ -14,6 +14,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 enum class Format { Ascii, LittleEndian, BigEndian };
 enum class Type { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
@@ -296,6 +297,8 @@ bool complete(const auto& indices) {
   return true;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MeshData read_ply(std::string_view bytes) {

@@ -9,6 +9,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 MeshData unit_rectangle() {
   return {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {}, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 1, 2, 0, 2, 3}};
@@ -19,6 +20,8 @@ class RectangleShape final : public TriangleMesh {
   explicit RectangleShape(const Properties& props) : TriangleMesh(unit_rectangle(), props, "rectangle") {}
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(RectangleShape, "shape", "rectangle", mesh_shape_params(), {"bsdf", "emitter"});

@@ -12,6 +12,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr uint16_t kFormat = 0x041C;
 constexpr uint32_t kHasNormals = 0x0001, kHasTexcoords = 0x0002, kHasColors = 0x0008, kFaceNormals = 0x0010,
@@ -143,6 +144,8 @@ void read_values(Inflater& in, std::vector<float>& out, uint64_t count, bool dou
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 MeshData read_serialized(std::string_view bytes, uint64_t shape_index) {

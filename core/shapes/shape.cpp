@@ -8,6 +8,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Area density to solid angle density at ref: dA = d^2 / |cos| d(omega).
 float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
@@ -17,6 +18,8 @@ float area_to_solid_angle(float pdf_area, Vec3 ref, Vec3 p, Vec3 n) {
   return dist2 > 0 && cos_surface > 0 ? pdf_area * dist2 / cos_surface : 0;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 uint32_t Shape::lobes() const { return bsdf_->lobes(); }

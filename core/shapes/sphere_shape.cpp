@@ -17,6 +17,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class SphereShape final : public AnalyticShape {
  public:
@@ -144,6 +145,8 @@ class SphereShape final : public AnalyticShape {
   float radius_ = 1;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(SphereShape, "shape", "sphere",

@@ -5,6 +5,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The angle between two edges, accurate for small and obtuse angles alike.
 double angle_between(const double a[3], const double b[3]) {
@@ -12,6 +13,8 @@ double angle_between(const double a[3], const double b[3]) {
   return std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::vector<Vec3> smooth_vertex_normals(const MeshData& mesh) {

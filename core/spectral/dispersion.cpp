@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 void check_finite(const std::vector<double>& values, const std::string& model) {
   if (values.empty()) throw std::invalid_argument(model + " needs at least one coefficient");
@@ -39,6 +40,8 @@ const std::vector<NamedGlass>& named_glasses() {
   return glasses;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Dispersion Dispersion::constant(double n) {

@@ -5,6 +5,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The papers tabulate their samples by photon energy; the wavelengths here are
 // those energies converted to nm (as refractiveindex.info lists them, to four
@@ -76,6 +77,8 @@ const char* const kUnavailable[] = {"AlAs",       "AlAs_palik", "AlSb_palik", "H
                                     "K",          "Li",         "Li_palik",   "Se",   "SnTe",
                                     "SnTe_palik", "Te",         "Te_palik",   "ThF4", "ThF4_palik"};
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::span<const MetalIorSample> metal_ior_table(std::string_view symbol) {

@@ -10,6 +10,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Color at_wavelengths(const SigmoidSpectrum& s, const Wavelengths& w, float scale = 1) {
   return {float(s(w.nm[0])) * scale, float(s(w.nm[1])) * scale, float(s(w.nm[2])) * scale};
@@ -30,6 +31,8 @@ double d65_normalised(double nm) {
   return cie_table_at(kCieD65, nm) / norm;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Color lift_reflectance(Color rgb, const Wavelengths& w) {

@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kSharpness = 0.0072, kCentreNm = 538;
 
@@ -25,6 +26,8 @@ double y_integral() {
   return integral;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float visible_wavelength_pdf(float nm) {

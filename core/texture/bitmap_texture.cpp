@@ -42,6 +42,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 enum class WrapMode { Repeat, Mirror, Clamp, Zero, One };
 
@@ -196,6 +197,8 @@ class BitmapTexture final : public Texture {
   std::optional<Transform> to_uv_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

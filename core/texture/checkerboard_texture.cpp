@@ -24,6 +24,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class CheckerboardTexture final : public Texture {
  public:
@@ -55,6 +56,8 @@ class CheckerboardTexture final : public Texture {
   std::optional<Transform> to_uv_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

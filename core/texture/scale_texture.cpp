@@ -13,6 +13,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float factor_of(const Properties& props) {
   const float factor = props.get_float("scale");
@@ -31,6 +32,8 @@ class ScaleTexture final : public ScaledTexture {
   explicit ScaleTexture(const Properties& props) : ScaledTexture(nested_of(props), factor_of(props)) {}
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ScaleTexture, "texture", "scale",

@@ -7,6 +7,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::string number(float v) {
   char text[32];
@@ -14,6 +15,8 @@ std::string number(float v) {
   return text;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 std::shared_ptr<Texture> read_texture(const Properties& props, const std::string& name) {

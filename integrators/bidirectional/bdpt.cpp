@@ -43,6 +43,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // First channel of strategy (s, t) among the layers: paths of k = s + t - 1
 // segments have k + 1 strategies, listed by k, then s.
@@ -132,6 +133,8 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
   int layers_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

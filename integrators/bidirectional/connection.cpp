@@ -11,6 +11,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Strategy (0, t): the camera subpath's last vertex is on an emitter.
 // Each environment emitter is a light of its own, weighed on its own.
@@ -34,6 +35,8 @@ Color emitted(const Scene& scene, std::vector<PathVertex>& camera, int t, const 
   return sum;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Color connect(const Scene& scene, std::span<const PathVertex> light, int s, std::vector<PathVertex>& camera, int t,

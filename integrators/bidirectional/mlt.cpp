@@ -55,6 +55,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct MltSettings {
   int max_depth = 5;
@@ -276,6 +277,8 @@ std::string MltChains::summary() const {
          ", normalisation=" + b;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -19,6 +19,7 @@ float solid_angle_to_area(const PathVertex& from, const PathVertex& to, float pd
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // A density per unit area across a bundle of parallel rays along d,
 // converted to the density per unit area on the surface of `to`, or for a
@@ -28,6 +29,8 @@ float parallel_to_area(const PathVertex& to, Vec3 d, float pdf_across, float cha
   return to.has_normal() ? pdf_across * abs_dot(to.si.ng, d) : pdf_across;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float emission_density(const PathVertex& light, const PathVertex& next, float chain_cos) {
@@ -110,6 +113,7 @@ DensityPair area_densities(const PathVertex& prev, const PathVertex& cur, const 
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The cosine at a chain's far end `end`, reached from the chain's last
 // vertex: 1 for a direction (the environment) or a point without a surface.
@@ -119,6 +123,8 @@ float end_cos(const PathVertex& end, const PathVertex& last) {
   return end.has_normal() && !end.environment ? abs_dot(end.si.ng, direction_to(end, last)) : 1;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void find_chain_ends(std::vector<PathVertex>& path) {

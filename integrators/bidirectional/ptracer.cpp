@@ -28,6 +28,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class ParticleTracer final : public LightPathIntegrator {
  public:
@@ -63,6 +64,8 @@ class ParticleTracer final : public LightPathIntegrator {
   PathSettings settings_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(ParticleTracer, "integrator", "ptracer", path_settings_params(), {});

@@ -6,6 +6,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Densities through a delta lobe are stored as 0 on both sides of a ratio;
 // reading them as 1 lets the discrete choices cancel.
@@ -83,6 +84,8 @@ ConnectionDensities from_ends(DensityPair camera_side, DensityPair light_side) {
           .camera_before_end = camera_side.to_prev};
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 ConnectionDensities connection_densities(const Scene& scene, std::span<const PathVertex> light,

@@ -9,6 +9,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Records every vertex a walk reaches, in radiance mode also the
 // environment it escapes to.
@@ -69,6 +70,8 @@ class SubpathRecorder {
   std::vector<PathVertex>& path_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void trace_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, const PathSettings& settings,

@@ -51,6 +51,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 enum class VcmMode { Both, Connect, Merge };
 
@@ -297,6 +298,8 @@ std::string VcmPixels::summary() const {
   return "iterations=" + std::to_string(iterations_) + ", last radius=" + radius;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -40,6 +40,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 std::vector<AovSpec> read_aovs(const Properties& props) {
   try {
@@ -161,6 +162,8 @@ class AovIntegrator final : public PixelIntegrator {
   std::vector<Nested> nested_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

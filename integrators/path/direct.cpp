@@ -16,6 +16,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 int64_t count(const Properties& props, const char* name) {
   const int64_t n = props.get_int_or(name, props.get_int("shading_samples"));
@@ -111,6 +112,8 @@ void DirectLight::escaped(const WalkEscape& e) {
         [&](const Emitter& emitter, Color Le, float w) { L += e.beta * emission_for(emitter, Le, wavelengths_) * w; });
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

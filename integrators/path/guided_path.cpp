@@ -62,6 +62,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class GuidedPathIntegrator;
 
@@ -240,6 +241,8 @@ std::string GuidedEstimator::summary() const {
   return s;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(GuidedPathIntegrator, "integrator", "guided_path", path_settings_params(guiding_params()), {});

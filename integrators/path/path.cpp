@@ -21,6 +21,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 class PathIntegrator : public RadianceIntegrator {
  public:
@@ -57,6 +58,8 @@ class VolpathIntegrator final : public PathIntegrator {
   using PathIntegrator::PathIntegrator;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(PathIntegrator, "integrator", "path", path_settings_params(), {});

@@ -38,6 +38,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // Density estimation over a round's caustic photon map.
 class CausticGather final : public CausticEstimator {
@@ -178,6 +179,8 @@ void CausticRounds::sample(Vec2i, const Ray& ray, Sampler& sampler, std::span<fl
   out[2] = L.b;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

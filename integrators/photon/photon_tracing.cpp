@@ -13,6 +13,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr uint64_t kBlock = 1024;
 
@@ -58,6 +59,8 @@ void trace_photon(const Scene& scene, PhotonPaths kind, Sampler& sampler, float 
               light_walk_limits(settings), sampler, recorder, start->emitter->medium(), wavelengths);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 bool trace_photons(const Scene& scene, PhotonPaths kind, uint64_t count, uint64_t round, uint64_t seed, float time,

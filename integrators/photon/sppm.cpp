@@ -65,6 +65,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct PixelState {
   Color direct;  // emission met and next-event estimates, summed over iterations
@@ -259,6 +260,8 @@ void SppmPixels::iterate_pixel(const PhotonMap& map, Sampler& sampler, Vec2i pix
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -4,6 +4,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 Vec3 at(const Element& e, Vec2 b) { return e.p[0] * (1 - b.x - b.y) + e.p[1] * b.x + e.p[2] * b.y; }
 
@@ -19,6 +20,8 @@ const std::vector<Vec2>& rule(int m) {
   return m == 2 ? coarse : fine;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float element_form_factor(const ElementSide& from, const ElementSide& to, const ElementScene* scene,

@@ -8,6 +8,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 float triangle_area(const std::array<Vec3, 3>& p) { return 0.5f * length(cross(p[1] - p[0], p[2] - p[0])); }
 
@@ -32,6 +33,8 @@ Element make_element(const std::array<Vec3, 3>& p, const std::array<Vec2, 3>& uv
   return e;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 float Element::longest_edge() const {

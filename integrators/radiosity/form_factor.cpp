@@ -5,6 +5,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 struct Vec3r {
   double x = 0, y = 0, z = 0;
@@ -15,6 +16,8 @@ double dot(Vec3r a, Vec3r b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Vec3r cross(Vec3r a, Vec3r b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 Vec3r widen(Vec3 v) { return {v.x, v.y, v.z}; }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 double point_to_triangle_form_factor(Vec3 x_in, Vec3 n_in, const std::array<Vec3, 3>& triangle) {

@@ -20,6 +20,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 // The patch size that stands for the default 0: a tenth of the scene's diagonal.
 constexpr float kDefaultPatchesPerDiagonal = 10;
@@ -100,6 +101,8 @@ class RadiosityIntegrator final : public PixelIntegrator {
   int gather_ = 0;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 CAUSTICA_REGISTER_PLUGIN(

@@ -19,6 +19,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr int kMaxSweeps = 10000;
 
@@ -43,6 +44,8 @@ Color emission(const Shape& shape, Vec3 p, Vec3 ng, Vec2 uv, Vec3 w) {
   return shape.emitter()->L(si, w);
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 RadiositySolution::RadiositySolution(const Scene& scene, const RadiositySettings& settings)

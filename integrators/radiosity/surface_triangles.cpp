@@ -11,6 +11,7 @@
 
 namespace caustica {
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 const char* const kOtherIntegrators = "path, bdpt, vcm or sppm";
 
@@ -58,6 +59,8 @@ void add_tessellated(std::vector<SurfaceTriangle>& out, const Shape& shape, floa
     }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 void check_radiosity_scene(const Scene& scene) {

@@ -6,6 +6,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kBelowOne = 1 - 0x1p-53;
 
@@ -20,6 +21,8 @@ int choose_half(double& u, double lower) {
   return 1;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Vec2 direction_to_square(Vec3 w) {
@@ -157,6 +160,7 @@ size_t DirectionalRecorder::bytes_for(const QuadtreeShape& shape) {
 }
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 void refine(const DirectionalDistribution& d, const std::array<double, 4>& energy, uint32_t from, double total,
             double threshold, int depth, int max_depth, QuadtreeShape& out, uint32_t into) {
@@ -175,6 +179,8 @@ void refine(const DirectionalDistribution& d, const std::array<double, 4>& energ
   }
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 QuadtreeShape refined_shape(const DirectionalDistribution& d, double threshold, int max_depth) {

@@ -3,6 +3,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 template <bool kMedia>
 Color walk(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
@@ -15,6 +16,8 @@ Color walk(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& se
   return radiance.L;
 }
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 Color trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,

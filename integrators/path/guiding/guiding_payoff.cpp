@@ -8,9 +8,12 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr double kMaxTracked = 65536;
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 GuidingPayoff::GuidingPayoff(int width, int height)

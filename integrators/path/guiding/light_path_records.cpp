@@ -15,6 +15,7 @@
 namespace caustica {
 
 namespace {
+namespace CAUSTICA_UNITY_ID {
 
 constexpr uint64_t kBlock = 1024;
 
@@ -41,6 +42,8 @@ class LightPathRecorder {
   GuidingTree& tree_;
 };
 
+}  // namespace CAUSTICA_UNITY_ID
+using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
 bool record_light_paths(const Scene& scene, GuidingTree& tree, uint64_t count, uint64_t pass, uint64_t seed,
