@@ -84,9 +84,9 @@ class BidirectionalPathTracer final : public LightPathIntegrator {
     SampleWavelengths w(scene, sampler);
     Wavelengths* wavelengths = w.get();
     trace_camera_subpath(scene, cs.ray, sampler, settings_, camera, wavelengths);
-    compute_densities(scene, camera);
+    compute_densities(scene, camera, heuristic_);
     trace_light_subpath(scene, sampler, cs.ray.time, settings_, light, wavelengths);
-    compute_densities(scene, light);
+    compute_densities(scene, light, heuristic_);
 
     for (int t = 1; t <= int(camera.size()); ++t)
       for (int s = 0; s <= int(light.size()); ++s) {

@@ -121,8 +121,8 @@ Contribution evaluate(const Scene& scene, const MltSettings& mlt, PrimarySampleS
     trace_light_subpath(scene, numbers, time, settings, light);
     if (int(light.size()) < s) return {raster, {}};
   }
-  compute_densities(scene, camera);
-  compute_densities(scene, light);
+  compute_densities(scene, camera, mlt.heuristic);
+  compute_densities(scene, light, mlt.heuristic);
   numbers.start_stream(kConnectionStream);
   if (t == 1) {
     const auto c = connect_to_camera(scene, light, s, numbers);

@@ -36,6 +36,14 @@ struct PathVertex {
   // on along its subpath (forward) or back toward its start (backward):
   // negative where the chain runs past the subpath's end.
   float chain_cos_fwd = -1, chain_cos_bwd = -1;
+  // The multiple importance sampling weights' partial sum at this vertex
+  // v_n (sum_partial_ratios): over the strategies in which the other
+  // subpath makes v_m .. v_n (connecting v_{m-1} to v_m, or merging at
+  // v_m), of h(prod_{l=m..n} pdf_rev_l / pdf_fwd_l). A strategy's weight
+  // needs the densities near its connection afresh and this sum for the
+  // rest, so that it costs the same for a long path as for a short one.
+  // In double: a path's densities span more than float's range.
+  double mis_partial = 0;
   std::optional<SurfaceBsdf> bsdf;
   // The medium the subpath reached this vertex through (for a medium
   // vertex, the one it lies in; for the camera and a light, the one they

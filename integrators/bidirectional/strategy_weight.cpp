@@ -1,5 +1,7 @@
 #include "integrators/bidirectional/strategy_weight.h"
 
+#include <algorithm>
+
 #include "core/registry/properties.h"
 #include "integrators/bidirectional/path_density.h"
 
@@ -13,6 +15,9 @@ namespace CAUSTICA_UNITY_ID {
 float remap(float pdf) { return pdf != 0 ? pdf : 1; }
 
 float h(MisHeuristic heuristic, float r) { return heuristic == MisHeuristic::Power ? r * r : r; }
+// In double where a ratio meets a partial sum: each alone may leave
+// float's range where their product does not.
+double h(MisHeuristic heuristic, double r) { return heuristic == MisHeuristic::Power ? r * r : r; }
 
 // The sum over every strategy used of h(p' / p), where p is the density of
 // connection (s, t) and p' that of the other strategy, (s, t) itself
@@ -38,10 +43,11 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
   float sum = joined || (merging.connections && !camera[t - 1].delta) ? 1 : 0, r = 1;
   const bool merges = merging.eta > 0;
   // Strategies s' > s: x_i = camera[k - i] for i >= s, whose density from
-  // the light side is the connection's for i = s and s + 1.
-  for (int i = s; i < k; ++i) {
+  // the light side is the connection's for i = s and s + 1; camera[t-3]'s
+  // partial sum holds the rest (i >= s + 2).
+  for (int i = s; i < std::min(k, s + 2); ++i) {
     const int j = k - i;
-    const float from_light = i == s ? camera_end : i == s + 1 ? camera_before_end : camera[j].pdf_rev;
+    const float from_light = i == s ? camera_end : camera_before_end;
     r *= remap(from_light) / remap(camera[j].pdf_fwd);
     const int sp = i + 1;
     const bool possible = sp == k && k == 1
@@ -51,11 +57,13 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
     if (merges && i >= 1 && mergeable(camera[j]) && ((i == s && joined) || !camera[j].delta))
       sum += h(heuristic, r * remap(camera[j].pdf_fwd) * merging.eta);
   }
+  if (t >= 4 && camera[t - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * camera[t - 3].mis_partial);
   // Strategies s' < s: x_i = light[i], whose density from the camera side
-  // is the connection's for i = s - 1 and s - 2.
+  // is the connection's for i = s - 1 and s - 2; light[s-3]'s partial sum
+  // holds the rest.
   r = 1;
-  for (int sp = s - 1; sp >= 0; --sp) {
-    const float from_camera = sp == s - 1 ? light_end : sp == s - 2 ? light_before_end : light[sp].pdf_rev;
+  for (int sp = s - 1; sp >= std::max(0, s - 2); --sp) {
+    const float from_camera = sp == s - 1 ? light_end : light_before_end;
     r *= remap(from_camera) / remap(light[sp].pdf_fwd);
     const bool possible =
         sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
@@ -63,6 +71,7 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
     if (merges && sp >= 1 && mergeable(light[sp]) && (sp == s - 1 || !light[sp].delta))
       sum += h(heuristic, r * remap(light[sp].pdf_fwd) * merging.eta);
   }
+  if (s >= 3 && light[s - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * light[s - 3].mis_partial);
   return sum;
 }
 
@@ -113,6 +122,16 @@ ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex&
                    end_densities(scene, {&light, 1}, 1, camera_end));
 }
 
+DensityPair merge_camera_densities(const Scene& scene, std::span<const PathVertex> camera, int t) {
+  return end_densities(scene, camera, t, camera[t]);
+}
+
+ConnectionDensities merge_densities(std::span<const PathVertex> light, int s, const PathVertex& camera_end,
+                                    DensityPair camera_side, const ScatteringBothWays& at_merge) {
+  return from_ends(camera_side, area_densities(light[s - 2], light[s - 1], camera_end, at_merge.backward,
+                                               at_merge.forward, camera_end.chain_cos_bwd));
+}
+
 float strategy_weight(const Scene& scene, std::span<const PathVertex> light, std::span<const PathVertex> camera, int s,
                       int t, MisHeuristic heuristic) {
   return strategy_weight(light, camera, s, t, heuristic, connection_densities(scene, light, camera, s, t));
@@ -127,6 +146,31 @@ float merge_weight(std::span<const PathVertex> light, std::span<const PathVertex
                    MisHeuristic heuristic, const ConnectionDensities& densities, const Merging& merging) {
   return h(heuristic, remap(densities.light_end) * merging.eta) /
          ratio_sum(light, camera, s, t, heuristic, densities, merging, false);
+}
+
+void sum_partial_ratios(std::span<PathVertex> path, MisHeuristic heuristic, const Merging& merging) {
+  const bool merges = merging.eta > 0;
+  double partial = 0;
+  // The last two vertices' reverse densities depend on the connection: no
+  // weight reads their sums.
+  for (size_t n = 0; n < path.size(); ++n) {
+    PathVertex& v = path[n];
+    if (n + 2 >= path.size()) {
+      v.mis_partial = 0;
+      continue;
+    }
+    double here = 0;
+    if (n == 0) {
+      here = v.kind == PathVertex::Kind::Light && !v.delta_light ? 1 : 0;
+    } else {
+      if (merging.connections && !v.delta && (n == 1 || !path[n - 1].delta)) here += 1;
+      if (merges && mergeable(v) && !v.delta) here += h(heuristic, double(remap(v.pdf_fwd)) * merging.eta);
+    }
+    // With no strategy yet the ratio is not read: the camera's own reverse
+    // density (a pinhole's) may not be finite.
+    partial = here + partial == 0 ? 0 : h(heuristic, double(remap(v.pdf_rev)) / remap(v.pdf_fwd)) * (here + partial);
+    v.mis_partial = partial;
+  }
 }
 
 bool mergeable(const PathVertex& v) { return v.is_surface() && (v.bsdf->lobes() & ~kDelta); }

@@ -2,6 +2,7 @@
 
 #include <span>
 
+#include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/path_vertex.h"
 
 namespace caustica {
@@ -24,6 +25,16 @@ struct Merging {
   // (vcm's merge-only mode) the strategies are s = 0 and the merges.
   bool connections = true;
 };
+
+// Sets every vertex's mis_partial for the heuristic and merging the
+// subpath's strategies will be weighed with: P_n = h(q_n) (c_n + P_{n-1}),
+// q_n = pdf_rev / pdf_fwd (a delta lobe's 0 read as 1) and c_n the
+// strategies at v_n that are possible (a connection unless v_n or v_{n-1}
+// scatters through a delta lobe, or at a light's origin unless the light
+// is delta; a merge where v_n is mergeable and left through a non-delta
+// lobe, with its ratio h(pdf_fwd eta)). The camera's own vertex starts no
+// strategy. The pdf_fwd and pdf_rev must be set (compute_densities).
+void sum_partial_ratios(std::span<PathVertex> path, MisHeuristic heuristic, const Merging& merging);
 
 // Whether a path may merge at `v`: a surface vertex with a non-delta lobe.
 bool mergeable(const PathVertex& v);
@@ -66,6 +77,19 @@ ConnectionDensities joined_densities(const PathVertex& camera_prev, const PathVe
 ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex& camera_prev,
                                            const PathVertex& camera_end, const ScatteringBothWays& at_camera,
                                            const PathVertex& light);
+// The same for merging at light[s-1] with camera[t], the camera subpath's
+// vertex within the radius, which stands in for light[s-1] where the
+// connection (s, t) of light[s-1] to camera[t-1] needs that vertex's
+// position or scattering (Georgiev et al. 2012). The camera side's part
+// depends on camera[t] alone (merge_camera_densities, once per camera
+// vertex); the light side's comes from `at_merge`, what
+// scattering_both_ways gave at camera[t] toward camera[t-1] and toward
+// light[s-2]. So a merge costs one BSDF evaluation, whatever the path's
+// length. Where the two vertices coincide these are connection_densities'.
+// s >= 2, t >= 1.
+DensityPair merge_camera_densities(const Scene& scene, std::span<const PathVertex> camera, int t);
+ConnectionDensities merge_densities(std::span<const PathVertex> light, int s, const PathVertex& camera_end,
+                                    DensityPair camera_side, const ScatteringBothWays& at_merge);
 // The weight from densities the caller already has; with `merging`,
 // weighed against the merges too.
 float strategy_weight(std::span<const PathVertex> light, std::span<const PathVertex> camera, int s, int t,

@@ -121,7 +121,8 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, float time, const
               light_walk_limits(settings), sampler, recorder, light.medium, wavelengths);
 }
 
-void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {
+void compute_densities(const Scene& scene, std::vector<PathVertex>& path, MisHeuristic heuristic,
+                       const Merging& merging) {
   const size_t n = path.size();
   if (n == 0) return;
   find_chain_ends(path);
@@ -142,6 +143,7 @@ void compute_densities(const Scene& scene, std::vector<PathVertex>& path) {
     path[j + 1].pdf_fwd = d.to_next;
     path[j - 1].pdf_rev = d.to_prev;
   }
+  sum_partial_ratios(path, heuristic, merging);
 }
 
 }  // namespace caustica

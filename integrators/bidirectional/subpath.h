@@ -6,6 +6,7 @@
 #include "core/render/path_settings.h"
 #include "core/sampling/sampler.h"
 #include "integrators/bidirectional/path_vertex.h"
+#include "integrators/bidirectional/strategy_weight.h"
 
 namespace caustica {
 
@@ -32,7 +33,9 @@ void trace_light_subpath(const Scene& scene, Sampler& sampler, float time, const
 // Sets pdf_fwd and pdf_rev of every vertex from the geometry, the way the
 // walks sampled them: a vertex after a delta lobe gets 0 in that direction.
 // pdf_rev of the last two vertices depends on the connection made later and
-// is left 0.
-void compute_densities(const Scene& scene, std::vector<PathVertex>& path);
+// is left 0. Then the partial sums of the weights its strategies will have
+// with `heuristic` and `merging` (sum_partial_ratios).
+void compute_densities(const Scene& scene, std::vector<PathVertex>& path, MisHeuristic heuristic,
+                       const Merging& merging = {});
 
 }  // namespace caustica

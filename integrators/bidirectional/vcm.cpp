@@ -17,8 +17,11 @@
 // alone: bdpt, its light subpaths traced per iteration) or merge (the
 // camera subpath's own emission hits and the merges: a progressive photon
 // map gathered at every camera vertex). The weights are those of the full
-// path's densities (strategy_weight.h), the same as the paper's recursive
-// form. Light subpath i of iteration n draws from (seed, n, i) and the
+// path's densities (strategy_weight.h), each subpath carrying the partial
+// sums of their ratios as the paper's recursive form does, so that a
+// connection or a merge costs the same for a long path as for a short one;
+// a merge takes what needs the light vertex's scattering from the camera
+// vertex within the radius, which stands in for it. Light subpath i of iteration n draws from (seed, n, i) and the
 // light-tracing splats sum exactly, so the image does not depend on the
 // thread count. In a moving scene an iteration's subpaths all live at its
 // time (pass_time).
@@ -45,6 +48,7 @@
 #include "core/scene/scene.h"
 #include "integrators/bidirectional/camera_connection.h"
 #include "integrators/bidirectional/connection.h"
+#include "integrators/bidirectional/path_density.h"
 #include "integrators/bidirectional/subpath.h"
 #include "integrators/photon/photon_map.h"
 #include "integrators/photon/photon_settings.h"
@@ -195,7 +199,7 @@ bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>
       sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
       std::vector<PathVertex>& light = light_paths_[i];
       trace_light_subpath(scene_, *sampler, time_.value_or(0), settings, light);
-      compute_densities(scene_, light);
+      compute_densities(scene_, light, vcm_.heuristic_, merging_);
       if (!merging_.connections) continue;
       for (int s = 1; s <= int(light.size()); ++s) {
         if ((s == 1 && settings.hide_emitters) || (settings.max_depth >= 0 && s > settings.max_depth)) continue;
@@ -239,7 +243,7 @@ void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration,
   const PathSettings& settings = vcm_.settings_;
   const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_, time_);
   trace_camera_subpath(scene_, cs.ray, sampler, settings, camera);
-  compute_densities(scene_, camera);
+  compute_densities(scene_, camera, vcm_.heuristic_, merging_);
   const std::vector<PathVertex>& light = light_paths_[size_t(pixel.y) * width_ + pixel.x];
   const int max_s = merging_.connections ? int(light.size()) : 0;
   Color sum;
@@ -266,20 +270,21 @@ Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radiu
   const int64_t max_depth = vcm_.settings_.max_depth;
   const Vec3 wo = direction_to(cv, camera[t - 2]);
   const std::span<const PathVertex> camera_part = std::span(camera).first(t - 1);
+  const DensityPair camera_side = merge_camera_densities(scene_, camera, t - 1);
   Color sum;
   map_.for_each_within(cv.p(), radius, [&](const Photon& ph) {
     if (max_depth >= 0 && int64_t(ph.depth) + t - 1 > max_depth) return;
     if (dot(ph.n, cv.si.ng) < 0.5f) return;
     const float cos_g = abs_dot(ph.wi, cv.si.ng);
     if (cos_g == 0) return;
-    const Color f = cv.bsdf->eval(wo, ph.wi) * (abs_dot(ph.wi, cv.si.shading.n) / cos_g);
-    if (f.is_black()) return;
+    const ScatteringBothWays at_merge = scattering_both_ways(cv, wo, ph.wi);
+    if (at_merge.f.is_black()) return;
     const KeptVertex kept = kept_vertices_[ph.source];
     const int s = int(kept.vertex) + 1;
     const std::span<const PathVertex> light = std::span(light_paths_[kept.path]).first(size_t(s));
     const float w = merge_weight(light, camera_part, s, t - 1, vcm_.heuristic_,
-                                 connection_densities(scene_, light, camera_part, s, t - 1), merging_);
-    sum += f * ph.power * w;
+                                 merge_densities(light, s, camera[t - 2], camera_side, at_merge), merging_);
+    sum += at_merge.f * ph.power * (w / cos_g);
   });
   return cv.beta * sum / merging_.eta;
 }

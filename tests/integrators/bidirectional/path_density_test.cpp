@@ -53,7 +53,7 @@ void expect_first_vertex_densities(const LoadedScene& scene, Expected&& expected
     sampler->start_sample(SampleKey::camera({0, 0}), uint64_t(i), 3);
     const Ray ray = scene->sensor().generate_ray({u(rng) * 16, u(rng) * 16}, {u(rng), u(rng)});
     trace_camera_subpath(*scene, ray, *sampler, settings, path);
-    compute_densities(*scene, path);
+    compute_densities(*scene, path, MisHeuristic::Power);
     if (path.size() < 2 || path[1].environment) continue;
     const double want = expected(ray, path[1]);
     EXPECT_NEAR(path[1].pdf_fwd, want, 1e-3 * want) << "sample " << i;
@@ -136,7 +136,7 @@ TEST(PathDensity, StoredDensitiesAreTheDefinedOnes) {
       else
         trace_camera_subpath(*scene, scene->sensor().generate_ray({i % 16 + 0.5f, i / 16 % 16 + 0.5f}, {0.5f, 0.5f}),
                              *sampler, settings, path);
-      compute_densities(*scene, path);
+      compute_densities(*scene, path, MisHeuristic::Power);
       const size_t n = path.size();
       for (size_t j = 0; j < n; ++j) {
         const PathVertex& v = path[j];
@@ -227,11 +227,11 @@ TEST(PathDensity, AScatteringEventOnThePreviousVertexEndsTheSubpath) {
     ScriptedSampler sampler(0.3f, rest);
     sampler.start_sample(SampleKey::camera({2, 2}), 0, 0);
     trace_camera_subpath(*scene, ray, sampler, settings, camera);
-    compute_densities(*scene, camera);
+    compute_densities(*scene, camera, MisHeuristic::Power);
     expect_distinct_vertices_and_finite_densities(camera);
     sampler.start_sample(SampleKey::light_path({2, 2}), 0, 0);
     trace_light_subpath(*scene, sampler, 0, settings, light);
-    compute_densities(*scene, light);
+    compute_densities(*scene, light, MisHeuristic::Power);
     expect_distinct_vertices_and_finite_densities(light);
     // With 0.3 throughout, flights of 0.18 scatter on to the length limit.
     const size_t expected_camera = rest > 0.1f ? 9 : 2, expected_light = rest > 0.1f ? 8 : 1;

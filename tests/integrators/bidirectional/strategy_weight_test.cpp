@@ -99,8 +99,8 @@ float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, in
   std::vector<PathVertex> light(x.begin(), x.begin() + sp), camera(x.rbegin(), x.rend() - sp);
   if (sp >= 1) light[0].kind = PathVertex::Kind::Light;
   if (sp == 0 && !x[0].environment) camera.back().kind = PathVertex::Kind::Surface;
-  compute_densities(scene, light);
-  compute_densities(scene, camera);
+  compute_densities(scene, light, h, merging);
+  compute_densities(scene, camera, h, merging);
   return strategy_weight(light, camera, sp, k + 1 - sp, h, connection_densities(scene, light, camera, sp, k + 1 - sp),
                          merging);
 }
@@ -108,23 +108,36 @@ float recomputed_weight(const Scene& scene, const std::vector<PathVertex>& x, in
 // Merging at x_i (0 < i < k) as vcm would have made the path: the light
 // subpath x_0 .. x_i merged with the camera subpath x_k .. x_{i+1} that
 // went on to x_i itself (so that a specular chain before it ends there).
+// The weight from the camera vertex's densities (merge_densities, as vcm
+// takes them) must equal the one from the connection's, since the two
+// vertices coincide.
 float recomputed_merge_weight(const Scene& scene, const std::vector<PathVertex>& x, int i, MisHeuristic h,
                               const Merging& merging) {
   const int k = int(x.size()) - 1;
   std::vector<PathVertex> light(x.begin(), x.begin() + i + 1), camera(x.rbegin(), x.rend() - i);
   light[0].kind = PathVertex::Kind::Light;
-  compute_densities(scene, light);
-  compute_densities(scene, camera);
+  compute_densities(scene, light, h, merging);
+  compute_densities(scene, camera, h, merging);
   const std::span<const PathVertex> camera_part = std::span(camera).first(size_t(k - i));
-  return merge_weight(light, camera_part, i + 1, k - i, h,
-                      connection_densities(scene, light, camera_part, i + 1, k - i), merging);
+  const float w = merge_weight(light, camera_part, i + 1, k - i, h,
+                               connection_densities(scene, light, camera_part, i + 1, k - i), merging);
+  // vcm's own route: the densities from the camera subpath's vertex at x_i.
+  const PathVertex& at = camera[size_t(k - i)];
+  const ScatteringBothWays at_merge =
+      scattering_both_ways(at, direction_to(at, camera[size_t(k - i - 1)]), direction_to(at, light[size_t(i - 1)]));
+  const float own = merge_weight(
+      light, camera_part, i + 1, k - i, h,
+      merge_densities(light, i + 1, camera[size_t(k - i - 1)], merge_camera_densities(scene, camera, k - i), at_merge),
+      merging);
+  EXPECT_NEAR(own, w, 1e-4f * std::max(w, 1e-3f)) << "merge at x_" << i << " of a path of " << k << " segments";
+  return w;
 }
 
 // The camera subpath's own density of x_i, sampled from x_{i+1}: the
 // subpath x_k .. x_i's last forward density, computed afresh.
 float camera_density(const Scene& scene, const std::vector<PathVertex>& x, int i) {
   std::vector<PathVertex> camera(x.rbegin(), x.rend() - i);
-  compute_densities(scene, camera);
+  compute_densities(scene, camera, MisHeuristic::Power);
   return camera.back().pdf_fwd;
 }
 
@@ -153,9 +166,10 @@ struct Tally {
 };
 
 // Calls f(x, s, t, light, camera, camera_part, sample) for every path bdpt's
-// subpaths make that a strategy (s, t) could join and that carries light.
+// subpaths make that a strategy (s, t) could join and that carries light;
+// the subpaths' partial sums are for heuristic h and `merging`.
 template <class F>
-void for_each_path(const Scene& scene, int samples, F&& f) {
+void for_each_path(const Scene& scene, int samples, MisHeuristic h, const Merging& merging, F&& f) {
   auto sampler = make_sampler();
   const PathSettings settings{8, 5, 0.95f, 0.1f, false};
   const Film& film = *scene.sensor().film();
@@ -164,9 +178,9 @@ void for_each_path(const Scene& scene, int samples, F&& f) {
     sampler->start_sample(SampleKey::camera({i % film.width(), i / film.width() % film.height()}), uint64_t(i), 7);
     const Vec2 raster{sampler->next_1d() * film.width(), sampler->next_1d() * film.height()};
     trace_camera_subpath(scene, scene.sensor().generate_ray(raster, sampler->next_2d()), *sampler, settings, camera);
-    compute_densities(scene, camera);
+    compute_densities(scene, camera, h, merging);
     trace_light_subpath(scene, *sampler, 0, settings, light);
-    compute_densities(scene, light);
+    compute_densities(scene, light, h, merging);
     for (int t = 1; t <= int(camera.size()); ++t)
       for (int s = 0; s <= int(light.size()); ++s) {
         if (s + t < 2 || s + t - 1 > 8) continue;
@@ -181,7 +195,7 @@ void for_each_path(const Scene& scene, int samples, F&& f) {
 }
 
 void check_scene(const Scene& scene, MisHeuristic h, int samples, Tally& tally) {
-  for_each_path(scene, samples,
+  for_each_path(scene, samples, h, {},
                 [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>& light,
                     const std::vector<PathVertex>& camera, const std::vector<PathVertex>& camera_part, int i) {
                   const int k = s + t - 1;
@@ -268,7 +282,7 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
     for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false}})
       for (const Scene* scene : {glass.scene.get(), mixed.scene.get(), coated.scene.get()})
         for_each_path(
-            *scene, 1000,
+            *scene, 1000, h, merging,
             [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
                 const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
               const int k = s + t - 1;
