@@ -21,9 +21,9 @@
 // sums of their ratios as the paper's recursive form does, so that a
 // connection or a merge costs the same for a long path as for a short one;
 // a merge takes what needs the light vertex's scattering from the camera
-// vertex within the radius, which stands in for it. Light subpath i of iteration n draws from (seed, n, i) and the
-// light-tracing splats sum exactly, so the image does not depend on the
-// thread count. In a moving scene an iteration's subpaths all live at its
+// vertex within the radius, which stands in for it. Light subpath i of
+// iteration n draws from (seed, n, i) and the light-tracing splats sum
+// exactly, so the image does not depend on the thread count. In a moving scene an iteration's subpaths all live at its
 // time (pass_time).
 //
 //   <integrator type="vcm"><string name="mode" value="both"/></integrator>
@@ -270,7 +270,8 @@ Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radiu
   const int64_t max_depth = vcm_.settings_.max_depth;
   const Vec3 wo = direction_to(cv, camera[t - 2]);
   const std::span<const PathVertex> camera_part = std::span(camera).first(t - 1);
-  const DensityPair camera_side = merge_camera_densities(scene_, camera, t - 1);
+  // Most camera vertices find no photon: their densities only when one does.
+  std::optional<DensityPair> camera_side;
   Color sum;
   map_.for_each_within(cv.p(), radius, [&](const Photon& ph) {
     if (max_depth >= 0 && int64_t(ph.depth) + t - 1 > max_depth) return;
@@ -279,11 +280,12 @@ Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radiu
     if (cos_g == 0) return;
     const ScatteringBothWays at_merge = scattering_both_ways(cv, wo, ph.wi);
     if (at_merge.f.is_black()) return;
+    if (!camera_side) camera_side = merge_camera_densities(scene_, camera, t - 1);
     const KeptVertex kept = kept_vertices_[ph.source];
     const int s = int(kept.vertex) + 1;
     const std::span<const PathVertex> light = std::span(light_paths_[kept.path]).first(size_t(s));
     const float w = merge_weight(light, camera_part, s, t - 1, vcm_.heuristic_,
-                                 merge_densities(light, s, camera[t - 2], camera_side, at_merge), merging_);
+                                 merge_densities(light, s, camera[t - 2], *camera_side, at_merge), merging_);
     sum += at_merge.f * ph.power * (w / cos_g);
   });
   return cv.beta * sum / merging_.eta;
