@@ -42,6 +42,15 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
   // (evaluating the BSDF between the two subpaths' directions) never gives.
   float sum = joined || (merging.connections && !camera[t - 1].delta) ? 1 : 0, r = 1;
   const bool merges = merging.eta > 0;
+  // Whether the path scatters at x_i through a delta lobe: as its subpath
+  // left it, except at the connection's ends, where the BSDF is evaluated
+  // (at x_s only when joined: a merge's x_s passes the path on as its
+  // subpath did).
+  const auto delta_at = [&](int i) {
+    if (i >= k || i == s - 1 || (i == s && joined)) return false;
+    return i >= s ? camera[k - i].delta : light[i].delta;
+  };
+  const auto merge_allowed = [&](int i) { return !merging.after_delta_only || delta_at(i + 1); };
   // Strategies s' > s: x_i = camera[k - i] for i >= s, whose density from
   // the light side is the connection's for i = s and s + 1; camera[t-3]'s
   // partial sum holds the rest (i >= s + 2).
@@ -54,7 +63,7 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
                               ? !origin.environment && !origin.delta_light
                               : (i == 0 || (i == s && joined) || !camera[j].delta) && (sp == k || !camera[j - 1].delta);
     if (possible && merging.connections) sum += h(heuristic, r);
-    if (merges && i >= 1 && mergeable(camera[j]) && ((i == s && joined) || !camera[j].delta))
+    if (merges && i >= 1 && mergeable(camera[j]) && ((i == s && joined) || !camera[j].delta) && merge_allowed(i))
       sum += h(heuristic, r * remap(camera[j].pdf_fwd) * merging.eta);
   }
   if (t >= 4 && camera[t - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * camera[t - 3].mis_partial);
@@ -68,7 +77,7 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
     const bool possible =
         sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
     if (possible && (merging.connections || sp == 0)) sum += h(heuristic, r);
-    if (merges && sp >= 1 && mergeable(light[sp]) && (sp == s - 1 || !light[sp].delta))
+    if (merges && sp >= 1 && mergeable(light[sp]) && (sp == s - 1 || !light[sp].delta) && merge_allowed(sp))
       sum += h(heuristic, r * remap(light[sp].pdf_fwd) * merging.eta);
   }
   if (s >= 3 && light[s - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * light[s - 3].mis_partial);
@@ -123,6 +132,10 @@ ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex&
 }
 
 DensityPair merge_camera_densities(const Scene& scene, std::span<const PathVertex> camera, int t) {
+  // A merge's camera[t-1] passes the path on as its subpath did: through a
+  // delta lobe, whose densities are read as the subpath stored them (0),
+  // not as the other lobes of a BSDF that has both (a plastic's coat).
+  if (camera[t - 1].delta) return {0, 0};
   return end_densities(scene, camera, t, camera[t]);
 }
 
@@ -150,6 +163,11 @@ float merge_weight(std::span<const PathVertex> light, std::span<const PathVertex
 
 void sum_partial_ratios(std::span<PathVertex> path, MisHeuristic heuristic, const Merging& merging) {
   const bool merges = merging.eta > 0;
+  // The vertex after v_n toward the camera: the camera subpath's previous
+  // one, the light subpath's next (both within the subpath wherever a
+  // partial sum is read).
+  const bool from_camera = !path.empty() && path[0].kind == PathVertex::Kind::Camera;
+  const auto next_toward_camera_delta = [&](size_t n) { return from_camera ? path[n - 1].delta : path[n + 1].delta; };
   double partial = 0;
   // The last two vertices' reverse densities depend on the connection: no
   // weight reads their sums.
@@ -164,7 +182,8 @@ void sum_partial_ratios(std::span<PathVertex> path, MisHeuristic heuristic, cons
       here = v.kind == PathVertex::Kind::Light && !v.delta_light ? 1 : 0;
     } else {
       if (merging.connections && !v.delta && (n == 1 || !path[n - 1].delta)) here += 1;
-      if (merges && mergeable(v) && !v.delta) here += h(heuristic, double(remap(v.pdf_fwd)) * merging.eta);
+      if (merges && mergeable(v) && !v.delta && (!merging.after_delta_only || next_toward_camera_delta(n)))
+        here += h(heuristic, double(remap(v.pdf_fwd)) * merging.eta);
     }
     // With no strategy yet the ratio is not read: the camera's own reverse
     // density (a pinhole's) may not be finite.

@@ -24,6 +24,13 @@ struct Merging {
   // Whether the connections (strategies s >= 1) are used; without them
   // (vcm's merge-only mode) the strategies are s = 0 and the merges.
   bool connections = true;
+  // Whether merging at x_i is restricted to where the path scatters at
+  // x_{i+1}, its next vertex toward the camera, through a delta lobe: the
+  // merges that find specular-diffuse-specular paths, which no connection
+  // can, and only at the camera vertices reached through glass or a
+  // mirror. A strategy left out of every path's weights keeps the estimate
+  // unbiased, and most camera vertices then look up no light vertex.
+  bool after_delta_only = false;
 };
 
 // Sets every vertex's mis_partial for the heuristic and merging the
@@ -85,8 +92,10 @@ ConnectionDensities light_sample_densities(const Scene& scene, const PathVertex&
 // vertex); the light side's comes from `at_merge`, what
 // scattering_both_ways gave at camera[t] toward camera[t-1] and toward
 // light[s-2]. So a merge costs one BSDF evaluation, whatever the path's
-// length. Where the two vertices coincide these are connection_densities'.
-// s >= 2, t >= 1.
+// length. Where the two vertices coincide these are connection_densities',
+// except where camera[t-1] left through a delta lobe: a merge passes the
+// path on through it, so its densities there are the delta's, not those a
+// connection's BSDF evaluation gives. s >= 2, t >= 1.
 DensityPair merge_camera_densities(const Scene& scene, std::span<const PathVertex> camera, int t);
 ConnectionDensities merge_densities(std::span<const PathVertex> light, int s, const PathVertex& camera_end,
                                     DensityPair camera_side, const ScatteringBothWays& at_merge);

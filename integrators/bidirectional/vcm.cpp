@@ -16,7 +16,10 @@
 // `mode` chooses the strategies: both (vcm), connect (the connections
 // alone: bdpt, its light subpaths traced per iteration) or merge (the
 // camera subpath's own emission hits and the merges: a progressive photon
-// map gathered at every camera vertex). The weights are those of the full
+// map gathered at every camera vertex). `merge_at` after_specular keeps
+// only the merges at camera vertices reached through a delta lobe, the
+// ones that find what no connection can; the weights leave the others out
+// of every path's strategies. The weights are those of the full
 // path's densities (strategy_weight.h), each subpath carrying the partial
 // sums of their ratios as the paper's recursive form does, so that a
 // connection or a merge costs the same for a long path as for a short one;
@@ -65,6 +68,14 @@ VcmMode read_mode(const Properties& props) {
   if (name == "connect") return VcmMode::Connect;
   if (name == "merge") return VcmMode::Merge;
   throw props.error("mode", "must be both, connect or merge, not '" + name + "'");
+}
+
+// Where merges may happen (Merging::after_delta_only).
+bool read_after_delta_only(const Properties& props) {
+  const std::string name = props.get_string("merge_at");
+  if (name == "every_vertex") return false;
+  if (name == "after_specular") return true;
+  throw props.error("merge_at", "must be every_vertex or after_specular, not '" + name + "'");
 }
 
 class VertexConnectionMerging;
@@ -117,7 +128,13 @@ class VertexConnectionMerging final : public IterativeIntegrator {
       : settings_(read_path_settings(props)),
         heuristic_(read_mis_heuristic(props)),
         mode_(read_mode(props)),
-        merge_(read_radius_schedule(props)) {}
+        after_delta_only_(read_after_delta_only(props)),
+        merge_(read_radius_schedule(props)) {
+    if (after_delta_only_ && mode_ == VcmMode::Merge)
+      throw props.error("merge_at",
+                        "after_specular needs mode both: merging alone at those vertices would find no path that "
+                        "passes no delta lobe (a point light's light reflected diffusely, say)");
+  }
 
   std::unique_ptr<IterationState> begin(const Scene& scene, uint64_t seed) const override {
     return std::make_unique<VcmPixels>(*this, scene, seed);
@@ -127,9 +144,11 @@ class VertexConnectionMerging final : public IterativeIntegrator {
 
   std::string plan(const Scene& scene) const override {
     const std::string radius = merge_.radius > 0 ? std::to_string(merge_.radius) : "1/200 of the scene's diagonal";
+    const std::string where =
+        after_delta_only_ ? "at the camera vertices reached through a delta lobe" : "at every camera vertex";
     std::string what = mode_ == VcmMode::Connect ? "every bdpt connection, no merging"
-                       : mode_ == VcmMode::Merge ? "emission hits and merging at every camera vertex, no connections"
-                                                 : "every bdpt connection and merging at every camera vertex";
+                       : mode_ == VcmMode::Merge ? "emission hits and merging " + where + ", no connections"
+                                                 : "every bdpt connection and merging " + where;
     return "vcm: one light subpath per pixel and iteration; " + what + " (radius " + radius +
            " at first, shrinking with alpha " + std::to_string(merge_.alpha) + "), weighed by the " +
            (heuristic_ == MisHeuristic::Power ? "power" : "balance") + " heuristic" +
@@ -143,6 +162,7 @@ class VertexConnectionMerging final : public IterativeIntegrator {
   PathSettings settings_;
   MisHeuristic heuristic_;
   VcmMode mode_;
+  bool after_delta_only_;
   PhotonSettings merge_;
 };
 
@@ -161,6 +181,7 @@ VcmPixels::VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uin
       light_image_(width_, height_, {"R", "G", "B"}, FilmBuffer::Moments::None) {
   light_image_.enable_splats();
   merging_.connections = vcm.mode_ != VcmMode::Merge;
+  merging_.after_delta_only = vcm.after_delta_only_;
 }
 
 bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
@@ -266,7 +287,7 @@ void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration,
 // end, and its value is the photon density estimate's (photon_density.h).
 Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radius) const {
   const PathVertex& cv = camera[t - 1];
-  if (!mergeable(cv)) return {};
+  if (!mergeable(cv) || (merging_.after_delta_only && (t < 3 || !camera[t - 2].delta))) return {};
   const int64_t max_depth = vcm_.settings_.max_depth;
   const Vec3 wo = direction_to(cv, camera[t - 2]);
   const std::span<const PathVertex> camera_part = std::span(camera).first(t - 1);
@@ -315,6 +336,10 @@ CAUSTICA_REGISTER_PLUGIN(
                           {"mode", ParamType::String, "both",
                            "strategies: both (connections and merging), connect (bdpt's alone) or merge (emission "
                            "hits and merging: a progressive photon map)"},
+                          {"merge_at", ParamType::String, "every_vertex",
+                           "where camera vertices merge: every_vertex, or after_specular (only those the camera "
+                           "subpath reached through a delta lobe: the merges that find caustics seen through glass "
+                           "or in a mirror, at a fraction of the lookups)"},
                           {"radius", ParamType::Float, "0",
                            "initial merge radius; 0 for 1/200 of the scene's bounding-box diagonal"},
                           {"alpha", ParamType::Float, "0.75",

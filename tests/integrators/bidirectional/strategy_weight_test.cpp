@@ -119,8 +119,12 @@ float recomputed_merge_weight(const Scene& scene, const std::vector<PathVertex>&
   compute_densities(scene, light, h, merging);
   compute_densities(scene, camera, h, merging);
   const std::span<const PathVertex> camera_part = std::span(camera).first(size_t(k - i));
-  const float w = merge_weight(light, camera_part, i + 1, k - i, h,
-                               connection_densities(scene, light, camera_part, i + 1, k - i), merging);
+  // Where x_{i+1} scatters through a delta lobe the merge passes the path
+  // on through it: the densities it decides there are the delta's, stored
+  // as 0, not the connection's evaluation of the BSDF's other lobes.
+  ConnectionDensities joined = connection_densities(scene, light, camera_part, i + 1, k - i);
+  if (x[size_t(i + 1)].delta) joined.light_end = joined.camera_before_end = 0;
+  const float w = merge_weight(light, camera_part, i + 1, k - i, h, joined, merging);
   // vcm's own route: the densities from the camera subpath's vertex at x_i.
   const PathVertex& at = camera[size_t(k - i)];
   const ScatteringBothWays at_merge =
@@ -131,6 +135,15 @@ float recomputed_merge_weight(const Scene& scene, const std::vector<PathVertex>&
       merging);
   EXPECT_NEAR(own, w, 1e-4f * std::max(w, 1e-3f)) << "merge at x_" << i << " of a path of " << k << " segments";
   return w;
+}
+
+// The light subpath's own density of x_i, sampled from x_{i-1}: the
+// subpath x_0 .. x_i's last forward density, computed afresh.
+float light_density(const Scene& scene, const std::vector<PathVertex>& x, int i) {
+  std::vector<PathVertex> light(x.begin(), x.begin() + i + 1);
+  light[0].kind = PathVertex::Kind::Light;
+  compute_densities(scene, light, MisHeuristic::Power);
+  return light.back().pdf_fwd;
 }
 
 // The camera subpath's own density of x_i, sampled from x_{i+1}: the
@@ -268,7 +281,11 @@ TEST(StrategyWeight, WeightsOfEveryPathSumToOne) {
 // without (its merge mode, where only s = 0 and the merges remain). With
 // the balance heuristic a merge's weight is its density's share, so its
 // ratio to connection s = i + 1's is the camera subpath's density of x_i
-// times eta, that density computed afresh.
+// times eta, that density computed afresh; where x_{i+1} scatters through a
+// delta lobe, connection s = i + 1 is impossible and the camera's density
+// of x_i is the delta's, so the merge's ratio to connection s = i's is the
+// light subpath's density of x_i times eta. With merges after delta lobes
+// only, a merge at x_i is a strategy where x_{i+1} scatters through one.
 TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   const auto glass = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-glass.xml", {{"res", "16"}});
   const auto mixed = test::scene_from_xml(kMixedScene);
@@ -277,43 +294,58 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   const std::string floor = "<bsdf type='diffuse'/></shape>";
   coated_xml.replace(coated_xml.find(floor), floor.size(), "<bsdf type='plastic'/></shape>");
   const auto coated = test::scene_from_xml(coated_xml);
-  int paths = 0, merges = 0, ratios = 0, through_coat = 0;
+  int paths = 0, merges = 0, ratios = 0, delta_ratios = 0, through_coat = 0, after_delta = 0;
   for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance})
-    for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false}})
+    for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false},
+                                  Merging{0.05f, true, true}, Merging{2.0f, true, true}})
       for (const Scene* scene : {glass.scene.get(), mixed.scene.get(), coated.scene.get()})
-        for_each_path(
-            *scene, 1000, h, merging,
-            [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
-                const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
-              const int k = s + t - 1;
-              double sum = 0;
-              for (int sp = 0; sp <= k; ++sp)
-                if (possible(x, sp) && (merging.connections || sp == 0))
-                  sum += recomputed_weight(*scene, x, sp, h, merging);
-              for (int i = 1; i < k; ++i) {
-                if (mergeable(x[i]) && x[i].delta) ++through_coat;
-                if (!mergeable(x[i]) || x[i].delta) continue;
-                const float w = recomputed_merge_weight(*scene, x, i, h, merging);
-                sum += w;
-                ++merges;
-                if (h != MisHeuristic::Balance || !merging.connections || x[i + 1].delta || !possible(x, i + 1))
-                  continue;
-                const float expected = camera_density(*scene, x, i) * merging.eta;
-                ASSERT_NEAR(w / recomputed_weight(*scene, x, i + 1, h, merging), expected, 1e-3 * expected)
-                    << "merge at x_" << i << " of strategy (" << s << ", " << t << ") of sample " << sample;
-                ++ratios;
-              }
-              ++paths;
-              ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << sample;
-            });
+        for_each_path(*scene, 1000, h, merging,
+                      [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
+                          const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
+                        const int k = s + t - 1;
+                        double sum = 0;
+                        for (int sp = 0; sp <= k; ++sp)
+                          if (possible(x, sp) && (merging.connections || sp == 0))
+                            sum += recomputed_weight(*scene, x, sp, h, merging);
+                        for (int i = 1; i < k; ++i) {
+                          if (mergeable(x[i]) && x[i].delta) ++through_coat;
+                          if (!mergeable(x[i]) || x[i].delta) continue;
+                          if (merging.after_delta_only && (i + 1 == k || !x[i + 1].delta)) continue;
+                          const float w = recomputed_merge_weight(*scene, x, i, h, merging);
+                          sum += w;
+                          ++merges;
+                          after_delta += merging.after_delta_only;
+                          if (h != MisHeuristic::Balance || !merging.connections) continue;
+                          if (x[i + 1].delta) {
+                            if (!possible(x, i)) continue;
+                            const float expected = light_density(*scene, x, i) * merging.eta;
+                            ASSERT_NEAR(w / recomputed_weight(*scene, x, i, h, merging), expected, 1e-3 * expected)
+                                << "merge at x_" << i << " before a delta lobe, strategy (" << s << ", " << t
+                                << ") of sample " << sample;
+                            ++delta_ratios;
+                            continue;
+                          }
+                          if (!possible(x, i + 1)) continue;
+                          const float expected = camera_density(*scene, x, i) * merging.eta;
+                          ASSERT_NEAR(w / recomputed_weight(*scene, x, i + 1, h, merging), expected, 1e-3 * expected)
+                              << "merge at x_" << i << " of strategy (" << s << ", " << t << ") of sample " << sample;
+                          ++ratios;
+                        }
+                        ++paths;
+                        ASSERT_NEAR(sum, 1, 1e-3) << "strategy (" << s << ", " << t << ") of sample " << sample;
+                      });
   EXPECT_GT(paths, 5000);
   EXPECT_GT(merges, 5000);
   EXPECT_GT(ratios, 1000);
+  EXPECT_GT(delta_ratios, 100);
   // Vertices a merge cannot make: the path leaves them through the delta
   // coat of smooth plastic.
   EXPECT_GT(through_coat, 100);
-  std::printf("%d paths, %d merges, %d merge-to-connection ratios checked, %d vertices left through a delta coat\n",
-              paths, merges, ratios, through_coat);
+  EXPECT_GT(after_delta, 500);
+  std::printf(
+      "%d paths, %d merges (%d of them after delta lobes only), %d merge-to-connection ratios checked (%d before a "
+      "delta lobe), %d vertices left through a delta coat\n",
+      paths, merges, after_delta, ratios, delta_ratios, through_coat);
 }
 
 }  // namespace CAUSTICA_UNITY_ID

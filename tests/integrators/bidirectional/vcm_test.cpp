@@ -30,7 +30,8 @@ struct Mode {
   const char* integrator;
   uint32_t iterations;
 };
-const Mode kModes[] = {{"vcm", 32}, {"vcm:mode=connect", 32}, {"vcm:mode=merge", 64}};
+const Mode kModes[] = {
+    {"vcm", 32}, {"vcm:mode=connect", 32}, {"vcm:mode=merge", 64}, {"vcm:merge_at=after_specular", 32}};
 constexpr int kTests = int(std::size(kScenes) * std::size(kModes)) * kRegionsPerSide * kRegionsPerSide;
 
 double mean_abs_difference(const std::vector<test::RegionEstimate>& a, const std::vector<test::RegionEstimate>& b) {
@@ -92,6 +93,14 @@ TEST(Vcm, BadParameters) {
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='vcm'>\n"
                                "<string name='mis' value='max'/></integrator></scene>"),
               HasSubstr("test.xml:2: parameter 'mis' of integrator 'vcm': must be power or balance, not 'max'"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='vcm'>\n"
+                               "<string name='merge_at' value='specular'/></integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'merge_at' of integrator 'vcm': must be every_vertex or after_specular, "
+                        "not 'specular'"));
+  EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='vcm'>\n"
+                               "<string name='merge_at' value='after_specular'/><string name='mode' value='merge'/>"
+                               "</integrator></scene>"),
+              HasSubstr("test.xml:2: parameter 'merge_at' of integrator 'vcm': after_specular needs mode both"));
 }
 
 // Media and spectral transport are refused with the integrators that
