@@ -85,6 +85,19 @@ struct KeptVertex {
   uint32_t path, vertex;
 };
 
+// What a block of light subpaths gives: the subpaths themselves, one after
+// another in one array (the camera pass reads them in the same order, so
+// that they stream through the cache rather than miss it a subpath at a
+// time), its light-tracing splats and, where merges are made, the vertices
+// they may use.
+struct LightBlock {
+  std::vector<PathVertex> subpaths;
+  std::vector<uint32_t> starts;  // subpath j of the block: [starts[j], starts[j + 1])
+  SplatList splats;
+  std::vector<Photon> photons;
+  std::vector<KeptVertex> vertices;
+};
+
 class VcmPixels final : public IterationState {
  public:
   VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uint64_t seed);
@@ -94,7 +107,9 @@ class VcmPixels final : public IterationState {
 
  private:
   bool trace_light_subpaths(uint64_t iteration, const std::atomic<bool>* stop);
-  void keep_vertices(float radius);
+  void keep_vertices(size_t path, const std::vector<PathVertex>& light, LightBlock& block) const;
+  std::span<const PathVertex> light_subpath(size_t path) const;
+  void build_map(float radius);
   void camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration, float radius);
   Color merge(const std::vector<PathVertex>& camera, int t, float radius) const;
 
@@ -114,9 +129,9 @@ class VcmPixels final : public IterationState {
   // In a moving scene, the iteration's time: its light and camera subpaths
   // all live at it, so that merges and connections join one instant.
   std::optional<float> time_;
+  size_t light_paths_ = 0;  // one per pixel
   // Kept between iterations, so that their memory is reused.
-  std::vector<std::vector<PathVertex>> light_paths_;
-  std::vector<SplatList> splats_;
+  std::vector<LightBlock> blocks_;
   std::vector<Photon> kept_;
   std::vector<KeptVertex> kept_vertices_;
   PhotonMap map_;
@@ -186,19 +201,19 @@ VcmPixels::VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uin
 
 bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   radius_ = round_radius(vcm_.merge_, initial_radius(scene_, vcm_.merge_), uint32_t(iteration));
-  light_paths_.resize(size_t(width_) * height_);
-  const double paths = double(light_paths_.size());
+  light_paths_ = size_t(width_) * height_;
+  const double paths = double(light_paths_);
   merging_.eta = vcm_.mode_ == VcmMode::Connect ? 0 : float(paths * kPi * double(radius_) * radius_);
   if (scene_.features().motion) time_ = pass_time(iteration, seed_);
   if (!trace_light_subpaths(iteration, stop)) return false;
-  if (merging_.eta > 0) keep_vertices(radius_);
+  if (merging_.eta > 0) build_map(radius_);
   tbb::parallel_for(0, height_, [&](int y) {
     auto sampler = scene_.sensor().sampler()->clone();
     for (int x = 0; x < width_; ++x) camera_sample(*sampler, {x, y}, iteration, radius_);
   });
-  for (const SplatList& list : splats_) {
-    light_image_.add_splats(list, scene_.sensor().film()->filter(), 0, height_);
-    light_image_.record_dropped(list);
+  for (const LightBlock& block : blocks_) {
+    light_image_.add_splats(block.splats, scene_.sensor().film()->filter(), 0, height_);
+    light_image_.record_dropped(block.splats);
   }
   light_image_.add_splat_paths(1);
   ++iterations_;
@@ -208,19 +223,27 @@ bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
 // One per pixel, each joined to the camera (strategies t = 1).
 bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>* stop) {
   const PathSettings& settings = vcm_.settings_;
-  const size_t blocks = (light_paths_.size() + kBlock - 1) / kBlock;
-  splats_.resize(blocks);
+  const size_t blocks = (light_paths_ + kBlock - 1) / kBlock;
+  blocks_.resize(blocks);
   const auto stopped = [&] { return stop && stop->load(); };
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     if (stopped()) return;
     auto sampler = scene_.sensor().sampler()->clone();
-    SplatList& splats = splats_[b];
+    LightBlock& block = blocks_[b];
+    SplatList& splats = block.splats;
     splats.clear();
-    for (size_t i = b * kBlock; i < std::min(light_paths_.size(), (b + 1) * kBlock); ++i) {
+    block.photons.clear();
+    block.vertices.clear();
+    block.subpaths.clear();
+    block.starts.assign(1, 0);
+    thread_local std::vector<PathVertex> light;
+    for (size_t i = b * kBlock; i < std::min(light_paths_, (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
-      std::vector<PathVertex>& light = light_paths_[i];
       trace_light_subpath(scene_, *sampler, time_.value_or(0), settings, light);
       compute_densities(scene_, light, vcm_.heuristic_, merging_);
+      block.subpaths.insert(block.subpaths.end(), light.begin(), light.end());
+      block.starts.push_back(uint32_t(block.subpaths.size()));
+      if (merging_.eta > 0) keep_vertices(i, light, block);
       if (!merging_.connections) continue;
       for (int s = 1; s <= int(light.size()); ++s) {
         if ((s == 1 && settings.hide_emitters) || (settings.max_depth >= 0 && s > settings.max_depth)) continue;
@@ -236,25 +259,39 @@ bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>
   return !stopped();
 }
 
-// The vertices merges may use, in a photon map: past the light's own, on a
-// surface with a non-delta lobe, short enough to leave a camera segment.
-void VcmPixels::keep_vertices(float radius) {
+// The vertices of light subpath `path` that merges may use: past the
+// light's own, on a surface with a non-delta lobe, short enough to leave a
+// camera segment.
+void VcmPixels::keep_vertices(size_t path, const std::vector<PathVertex>& light, LightBlock& block) const {
+  const int64_t max_depth = vcm_.settings_.max_depth;
+  for (size_t v = 1; v < light.size(); ++v) {
+    if (!mergeable(light[v]) || (max_depth >= 0 && int64_t(v) >= max_depth)) continue;
+    Photon& ph = block.photons.emplace_back();
+    ph.p = light[v].p();
+    ph.wi = direction_to(light[v], light[v - 1]);
+    ph.n = light[v].si.ng;
+    ph.power = light[v].beta;
+    ph.depth = uint32_t(v);
+    block.vertices.push_back({uint32_t(path), uint32_t(v)});
+  }
+}
+
+std::span<const PathVertex> VcmPixels::light_subpath(size_t path) const {
+  const LightBlock& block = blocks_[path / kBlock];
+  const size_t j = path % kBlock;
+  return std::span(block.subpaths).subspan(block.starts[j], block.starts[j + 1] - block.starts[j]);
+}
+
+// The blocks' kept vertices, in block order, in a photon map.
+void VcmPixels::build_map(float radius) {
   kept_.clear();
   kept_vertices_.clear();
-  const int64_t max_depth = vcm_.settings_.max_depth;
-  for (size_t i = 0; i < light_paths_.size(); ++i) {
-    const std::vector<PathVertex>& light = light_paths_[i];
-    for (size_t v = 1; v < light.size(); ++v) {
-      if (!mergeable(light[v]) || (max_depth >= 0 && int64_t(v) >= max_depth)) continue;
-      Photon& ph = kept_.emplace_back();
-      ph.p = light[v].p();
-      ph.wi = direction_to(light[v], light[v - 1]);
-      ph.n = light[v].si.ng;
-      ph.power = light[v].beta;
-      ph.depth = uint32_t(v);
-      ph.source = uint32_t(kept_vertices_.size());
-      kept_vertices_.push_back({uint32_t(i), uint32_t(v)});
+  for (const LightBlock& block : blocks_) {
+    for (Photon ph : block.photons) {
+      ph.source = uint32_t(kept_.size());
+      kept_.push_back(ph);
     }
+    kept_vertices_.insert(kept_vertices_.end(), block.vertices.begin(), block.vertices.end());
   }
   map_.build(kept_, radius);
 }
@@ -265,7 +302,7 @@ void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration,
   const CameraSample cs = sample_camera_ray(scene_, sampler, pixel, iteration, seed_, time_);
   trace_camera_subpath(scene_, cs.ray, sampler, settings, camera);
   compute_densities(scene_, camera, vcm_.heuristic_, merging_);
-  const std::vector<PathVertex>& light = light_paths_[size_t(pixel.y) * width_ + pixel.x];
+  const std::span<const PathVertex> light = light_subpath(size_t(pixel.y) * width_ + pixel.x);
   const int max_s = merging_.connections ? int(light.size()) : 0;
   Color sum;
   for (int t = 2; t <= int(camera.size()); ++t) {
@@ -304,7 +341,7 @@ Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radiu
     if (!camera_side) camera_side = merge_camera_densities(scene_, camera, t - 1);
     const KeptVertex kept = kept_vertices_[ph.source];
     const int s = int(kept.vertex) + 1;
-    const std::span<const PathVertex> light = std::span(light_paths_[kept.path]).first(size_t(s));
+    const std::span<const PathVertex> light = light_subpath(kept.path).first(size_t(s));
     const float w = merge_weight(light, camera_part, s, t - 1, vcm_.heuristic_,
                                  merge_densities(light, s, camera[t - 2], *camera_side, at_merge), merging_);
     sum += at_merge.f * ph.power * (w / cos_g);
