@@ -33,13 +33,20 @@ from suite_config import spp_ladder
 ROOT = Path(__file__).resolve().parent.parent
 MAX_DEPTH = 8
 SCENES = ["cornell-box-glass", "cornell-box-pool", "door-nearly-shut"]
-INTEGRATORS = ["path", "bdpt", "sppm", "vcm", "mlt"]
+INTEGRATORS = ["path", "bdpt", "sppm", "vcm", "vcm:merge_at=after_specular", "mlt"]
 BASELINES = ("bdpt", "sppm")
 
 
 def with_depth(integrator, bootstrap=100000):
     extra = f",bootstrap={bootstrap}" if integrator == "mlt" else ""
-    return f"{integrator}:max_depth={MAX_DEPTH}{extra}"
+    return f"{integrator}{',' if ':' in integrator else ':'}max_depth={MAX_DEPTH}{extra}"
+
+
+def label(integrator):
+    """The integrator and the options it was chosen with, without the ones every run shares."""
+    name, _, options = integrator.partition(":")
+    chosen = [o for o in options.split(",") if o and not o.startswith(("max_depth=", "bootstrap="))]
+    return name + (":" + ",".join(chosen) if chosen else "")
 
 
 def scene_file(name, out):
@@ -60,7 +67,7 @@ def efficiency_table(rows):
     """Per scene: (integrator, spp, seconds, relMSE, relMSE x seconds, ratio to the better baseline), longest runs."""
     longest = {}
     for row in rows:
-        name = row["integrator"].split(":")[0]
+        name = label(row["integrator"])
         last = longest.setdefault(row["scene"], {}).get(name)
         if last is None or row["spp"] > last["spp"]:
             longest[row["scene"]][name] = row

@@ -24,7 +24,7 @@ class BidirectionalBench(unittest.TestCase):
             self.assertEqual(result.returncode, 0, result.stderr)
             table = (out / "bidirectional.md").read_text()
             for scene in ("cornell-box-glass", "door-nearly-shut"):
-                for integrator in ("path", "bdpt", "sppm", "vcm", "mlt"):
+                for integrator in ("path", "bdpt", "sppm", "vcm", "vcm:merge_at=after_specular", "mlt"):
                     self.assertIn(f"| {scene} | {integrator} | 2 |", table)
             self.assertIn('value="2"', (out / "scenes" / "door-nearly-shut.xml").read_text())
             self.assertTrue((out / "plots" / "convergence.png").exists())

@@ -294,15 +294,27 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   const std::string floor = "<bsdf type='diffuse'/></shape>";
   coated_xml.replace(coated_xml.find(floor), floor.size(), "<bsdf type='plastic'/></shape>");
   const auto coated = test::scene_from_xml(coated_xml);
-  int paths = 0, merges = 0, ratios = 0, delta_ratios = 0, through_coat = 0, after_delta = 0;
+  int paths = 0, merges = 0, ratios = 0, delta_ratios = 0, through_coat = 0, after_delta = 0, ends_left_delta = 0;
   for (const MisHeuristic h : {MisHeuristic::Power, MisHeuristic::Balance})
     for (const Merging merging : {Merging{0.05f, true}, Merging{2.0f, true}, Merging{0.05f, false},
                                   Merging{0.05f, true, true}, Merging{2.0f, true, true}})
       for (const Scene* scene : {glass.scene.get(), mixed.scene.get(), coated.scene.get()})
         for_each_path(*scene, 1000, h, merging,
-                      [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>&,
-                          const std::vector<PathVertex>&, const std::vector<PathVertex>&, int sample) {
+                      [&](const std::vector<PathVertex>& x, int s, int t, const std::vector<PathVertex>& light,
+                          const std::vector<PathVertex>&, const std::vector<PathVertex>& camera_part, int sample) {
                         const int k = s + t - 1;
+                        // The strategy's weight from its subpaths as they were traced (an end they left through
+                        // a delta lobe, which the connection scatters through its other lobes, included) is the
+                        // one computed afresh from the path.
+                        if (merging.connections || s == 0) {
+                          const std::span<const PathVertex> part = std::span(light).first(size_t(s));
+                          const float own =
+                              strategy_weight(part, camera_part, s, t, h,
+                                              connection_densities(*scene, part, camera_part, s, t), merging);
+                          ASSERT_NEAR(own, recomputed_weight(*scene, x, s, h, merging), 1e-3)
+                              << "strategy (" << s << ", " << t << ") of sample " << sample;
+                          ends_left_delta += (s >= 1 && light[size_t(s - 1)].delta) || camera_part.back().delta;
+                        }
                         double sum = 0;
                         for (int sp = 0; sp <= k; ++sp)
                           if (possible(x, sp) && (merging.connections || sp == 0))
@@ -342,10 +354,11 @@ TEST(StrategyWeight, WithMergesWeightsOfEveryPathSumToOne) {
   // coat of smooth plastic.
   EXPECT_GT(through_coat, 100);
   EXPECT_GT(after_delta, 500);
+  EXPECT_GT(ends_left_delta, 100);
   std::printf(
       "%d paths, %d merges (%d of them after delta lobes only), %d merge-to-connection ratios checked (%d before a "
-      "delta lobe), %d vertices left through a delta coat\n",
-      paths, merges, after_delta, ratios, delta_ratios, through_coat);
+      "delta lobe), %d vertices left through a delta coat, %d connections at an end its subpath left so\n",
+      paths, merges, after_delta, ratios, delta_ratios, through_coat, ends_left_delta);
 }
 
 }  // namespace CAUSTICA_UNITY_ID

@@ -80,6 +80,18 @@ TEST(Vcm, SameImageForAnyThreadCount) {
   EXPECT_EQ(one.resolve(), two.resolve());
 }
 
+// Merges only after delta lobes: a scene with none has no merge to make,
+// and renders as the connections alone, bit for bit; the glass box has
+// them.
+TEST(Vcm, MergesAfterSpecularOnlyWhereTheSceneHasDeltaLobes) {
+  for (const char* name : {"cornell-box", "cornell-box-glass"}) {
+    const auto after = test::scene_with_integrator(name, "vcm:merge_at=after_specular");
+    const auto connect = test::scene_with_integrator(name, "vcm:mode=connect");
+    const bool same = test::render_scene(after, 4, 3, 1).resolve() == test::render_scene(connect, 4, 3, 1).resolve();
+    EXPECT_EQ(same, std::string(name) == "cornell-box") << name;
+  }
+}
+
 TEST(Vcm, BadParameters) {
   EXPECT_THAT(test::load_error("<scene version='3.0.0'><integrator type='vcm'>\n"
                                "<string name='mode' value='all'/></integrator></scene>"),
