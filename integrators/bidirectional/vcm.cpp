@@ -129,7 +129,7 @@ class VcmPixels final : public IterationState {
   // In a moving scene, the iteration's time: its light and camera subpaths
   // all live at it, so that merges and connections join one instant.
   std::optional<float> time_;
-  size_t light_paths_ = 0;  // one per pixel
+  size_t light_path_count_ = 0;  // one per pixel
   // Kept between iterations, so that their memory is reused.
   std::vector<LightBlock> blocks_;
   std::vector<Photon> kept_;
@@ -201,8 +201,8 @@ VcmPixels::VcmPixels(const VertexConnectionMerging& vcm, const Scene& scene, uin
 
 bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
   radius_ = round_radius(vcm_.merge_, initial_radius(scene_, vcm_.merge_), uint32_t(iteration));
-  light_paths_ = size_t(width_) * height_;
-  const double paths = double(light_paths_);
+  light_path_count_ = size_t(width_) * height_;
+  const double paths = double(light_path_count_);
   merging_.eta = vcm_.mode_ == VcmMode::Connect ? 0 : float(paths * kPi * double(radius_) * radius_);
   if (scene_.features().motion) time_ = pass_time(iteration, seed_);
   if (!trace_light_subpaths(iteration, stop)) return false;
@@ -223,7 +223,7 @@ bool VcmPixels::iterate(uint64_t iteration, const std::atomic<bool>* stop) {
 // One per pixel, each joined to the camera (strategies t = 1).
 bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>* stop) {
   const PathSettings& settings = vcm_.settings_;
-  const size_t blocks = (light_paths_ + kBlock - 1) / kBlock;
+  const size_t blocks = (light_path_count_ + kBlock - 1) / kBlock;
   blocks_.resize(blocks);
   const auto stopped = [&] { return stop && stop->load(); };
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
@@ -237,7 +237,7 @@ bool VcmPixels::trace_light_subpaths(uint64_t iteration, const std::atomic<bool>
     block.subpaths.clear();
     block.starts.assign(1, 0);
     thread_local std::vector<PathVertex> light;
-    for (size_t i = b * kBlock; i < std::min(light_paths_, (b + 1) * kBlock); ++i) {
+    for (size_t i = b * kBlock; i < std::min(light_path_count_, (b + 1) * kBlock); ++i) {
       sampler->start_sample(SampleKey::photon_round(iteration), i, seed_);
       trace_light_subpath(scene_, *sampler, time_.value_or(0), settings, light);
       compute_densities(scene_, light, vcm_.heuristic_, merging_);
