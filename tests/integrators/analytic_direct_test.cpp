@@ -13,7 +13,6 @@
 //    re-hits the plane it left and blackens the pixel (acne).
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include <string>
 
 #include "core/math/constants.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -39,7 +39,7 @@ std::string number(double x) {
 // every vertex.
 std::string square_ply(const std::string& name, const double c[3], const double t1[3], const double t2[3], double a,
                        const double* normal) {
-  const auto path = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(getpid()) + ".ply");
+  const auto path = test::scratch_dir() / (name + ".ply");
   std::ofstream out(path);
   out << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
   if (normal) out << "property float nx\nproperty float ny\nproperty float nz\n";
@@ -94,8 +94,7 @@ TEST(AnalyticDirect, NextEventEstimationUsesTheShadingNormalsCosine) {
   const double to_light[3] = {std::sqrt(0.5), 0, std::sqrt(0.5)};
   const double expected = kReflectance / kPi * kIrradiance * (lean[0] * to_light[0] + lean[2] * to_light[2]);
   const std::string vertex_normals = "<shape type='ply'><string name='filename' value='" +
-                                     square_ply("caustica_leaning_normals", c, x, y, 8, lean) + "'/>" + diffuse() +
-                                     "</shape>";
+                                     square_ply("leaning_normals", c, x, y, 8, lean) + "'/>" + diffuse() + "</shape>";
   // 2 c - 1 = (0.5, 0, 0.866) in the rectangle's tangent frame (+x, +y, +z).
   const std::string normal_map =
       "<shape type='rectangle'><transform name='to_world'><scale value='8'/></transform>"
@@ -109,7 +108,7 @@ TEST(AnalyticDirect, NextEventEstimationUsesTheShadingNormalsCosine) {
   }
   // Without the lean, the geometric cosine.
   const std::string flat = "<shape type='ply'><string name='filename' value='" +
-                           square_ply("caustica_flat_normals", c, x, y, 8, up) + "'/>" + diffuse() + "</shape>";
+                           square_ply("flat_normals", c, x, y, 8, up) + "'/>" + diffuse() + "</shape>";
   expect_uniform(lit_plane("direct", flat, eye, target, to_light), kReflectance / kPi * kIrradiance * to_light[2],
                  "flat");
 }
@@ -131,7 +130,7 @@ TEST(AnalyticDirect, NoAcneFarFromTheOrigin) {
   const double to_light[3] = {std::cos(a) * n[0] + std::sin(a) * t1[0], std::cos(a) * n[1] + std::sin(a) * t1[1],
                               std::cos(a) * n[2] + std::sin(a) * t1[2]};
   const std::string plane = "<shape type='ply'><string name='filename' value='" +
-                            square_ply("caustica_far_plane", c, t1, t2, 50, nullptr) + "'/>" + diffuse() + "</shape>";
+                            square_ply("far_plane", c, t1, t2, 50, nullptr) + "'/>" + diffuse() + "</shape>";
   const std::string up = number(t2[0]) + ", " + number(t2[1]) + ", " + number(t2[2]);
   for (const char* integrator : {"direct", "path"})
     expect_uniform(lit_plane(integrator, plane, eye, c, to_light, up), kReflectance / kPi * kIrradiance * std::cos(a),

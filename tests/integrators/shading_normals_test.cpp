@@ -10,7 +10,6 @@
 // integrators and floors, against Student's t. Fixed seeds.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -19,6 +18,7 @@
 
 #include "tests/support/chi2.h"
 #include "tests/support/independent_runs.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/support/test_scenes.h"
 #include "tests/support/z_test.h"
 
@@ -28,8 +28,7 @@ namespace CAUSTICA_UNITY_ID {
 
 // A 4x4 square at z = 0 whose four vertex normals lean 30 degrees toward +x.
 std::string vertex_normal_floor() {
-  const auto path =
-      std::filesystem::temp_directory_path() / ("caustica_tilted_floor_" + std::to_string(getpid()) + ".ply");
+  const auto path = test::scratch_dir() / "tilted_floor.ply";
   std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                          "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"

@@ -1,7 +1,7 @@
+
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -10,6 +10,7 @@
 
 #include "core/math/constants.h"
 #include "tests/support/bsdf_checks.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -27,9 +28,7 @@ const char* kDiffuse = "<bsdf type='diffuse'><rgb name='reflectance' value='0.2,
 // A 16 x 1 float image whose bilinear lookup is h(u) = u away from the borders.
 fs::path ramp() {
   static const fs::path path = [] {
-    const fs::path dir = fs::temp_directory_path() / ("caustica_bumpmap_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path file = dir / "ramp.exr";
+    const fs::path file = test::scratch_dir() / "bumpmap_ramp.exr";
     const int w = 16;
     std::vector<float> px;
     for (int i = 0; i < w; ++i) px.push_back((i + 0.5f) / w);

@@ -3,7 +3,6 @@
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include "core/math/constants.h"
 #include "core/registry/properties.h"
 #include "tests/support/bsdf_checks.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/support/test_scenes.h"
 
 namespace caustica {
@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 // A folder of images written for the tests in this file.
 fs::path image_dir() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("caustica_texture_test_" + std::to_string(::getpid()));
+    const fs::path d = test::scratch_dir() / "texture_test";
     fs::create_directories(d);
     return d;
   }();
