@@ -7,16 +7,22 @@
 //                hit point's interaction: position, normals, uv, error bounds);
 //   PathTracer   the whole render (sampling, BSDFs, lights, film) over as many rays.
 // The gaps between the three are what caustica spends beside ray queries.
+// EmbreeBatched/B/N replays the same rays as a walk over batches of B
+// paths would ask for them, in packets of N (1, 8 or 16): what tracing in
+// packets, the traversal half of a batched walk, could gain.
 // Beside the Cornell boxes, a generated scene holds a million-triangle mesh
 // (a bumpy sphere in the Cornell room), where traversal dominates.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -140,6 +146,111 @@ void BM_Embree(benchmark::State& state, const std::string& name) {
   state.SetItemsProcessed(int64_t(state.iterations() * rec.rays.size()));
 }
 
+// The recorded rays regrouped as a walk over batches of `batch` paths
+// would ask for them, a wave at a time: the batch's camera rays, then its
+// first shadow rays, its first bounce rays, its second shadow rays, and so
+// on. A path starts at its camera ray, which (the scenes' pinhole's) leaves
+// from the camera's position, as no other closest-hit ray does.
+struct Wave {
+  bool shadow = false;
+  std::vector<RTCRay> rays;
+};
+
+std::vector<Wave> batched_waves(const Recording& rec, size_t batch) {
+  const Vec3 eye = rec.rays.front().ray.o;
+  std::vector<std::array<std::vector<RTCRay>, 2>> paths;  // per path: its closest-hit rays, its shadow rays
+  for (const RayLog::Entry& e : rec.rays) {
+    if (!e.shadow && e.ray.o == eye) paths.emplace_back();
+    paths.back()[e.shadow].push_back(to_rtc(e.ray));
+  }
+  std::vector<Wave> waves;
+  for (size_t first = 0; first < paths.size(); first += batch) {
+    const size_t end = std::min(paths.size(), first + batch);
+    for (size_t k = 0, left = 1; left > 0; ++k) {
+      left = 0;
+      for (const bool shadow : {false, true}) {
+        Wave wave{shadow, {}};
+        for (size_t i = first; i < end; ++i)
+          if (k < paths[i][shadow].size()) wave.rays.push_back(paths[i][shadow][k]);
+        left += wave.rays.size();
+        if (!wave.rays.empty()) waves.push_back(std::move(wave));
+      }
+    }
+  }
+  return waves;
+}
+
+// Up to N rays in one of Embree's packets of N (8 or 16), or one by one (N = 1).
+template <int N>
+void trace(RTCScene scene, bool shadow, std::span<const RTCRay> part) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  if constexpr (N == 1) {
+    if (shadow) {
+      RTCRay r = part[0];
+      rtcOccluded1(scene, &context, &r);
+      benchmark::DoNotOptimize(r.tfar);
+    } else {
+      RTCRayHit hit{};
+      hit.ray = part[0];
+      hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene, &context, &hit);
+      benchmark::DoNotOptimize(hit.hit.geomID);
+    }
+  } else {
+    alignas(64) int valid[N];
+    alignas(64) RTCRayHitNt<N> rays;
+    for (int i = 0; i < N; ++i) {
+      valid[i] = size_t(i) < part.size() ? -1 : 0;
+      const RTCRay& r = part[std::min(size_t(i), part.size() - 1)];
+      rays.ray.org_x[i] = r.org_x, rays.ray.org_y[i] = r.org_y, rays.ray.org_z[i] = r.org_z;
+      rays.ray.dir_x[i] = r.dir_x, rays.ray.dir_y[i] = r.dir_y, rays.ray.dir_z[i] = r.dir_z;
+      rays.ray.tnear[i] = r.tnear, rays.ray.tfar[i] = r.tfar, rays.ray.time[i] = r.time;
+      rays.ray.mask[i] = r.mask, rays.ray.id[i] = r.id, rays.ray.flags[i] = r.flags;
+      rays.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    if constexpr (N == 16) {
+      if (shadow)
+        rtcOccluded16(valid, scene, &context, reinterpret_cast<RTCRay16*>(&rays.ray));
+      else
+        rtcIntersect16(valid, scene, &context, reinterpret_cast<RTCRayHit16*>(&rays));
+    } else {
+      static_assert(N == 8);
+      if (shadow)
+        rtcOccluded8(valid, scene, &context, reinterpret_cast<RTCRay8*>(&rays.ray));
+      else
+        rtcIntersect8(valid, scene, &context, reinterpret_cast<RTCRayHit8*>(&rays));
+    }
+    benchmark::DoNotOptimize(rays.ray.tfar[0]);
+    benchmark::DoNotOptimize(rays.hit.geomID[0]);
+  }
+}
+
+// Batches of range(0) paths, their waves traced in packets of range(1)
+// rays (1: one query a ray, in the batched order).
+void BM_EmbreeBatched(benchmark::State& state, const std::string& name) {
+  const Recording& rec = recording(name);
+  const RTCScene scene = rec.scene->accel().rtc_scene();
+  const std::vector<Wave> waves = batched_waves(rec, size_t(state.range(0)));
+  const size_t width = size_t(state.range(1));
+  size_t packets = 0;
+  for (const Wave& wave : waves) packets += (wave.rays.size() + width - 1) / width;
+  for (auto _ : state)
+    for (const Wave& wave : waves)
+      for (size_t first = 0; first < wave.rays.size(); first += width) {
+        const std::span<const RTCRay> part =
+            std::span(wave.rays).subspan(first, std::min(width, wave.rays.size() - first));
+        if (width == 16)
+          trace<16>(scene, wave.shadow, part);
+        else if (width == 8)
+          trace<8>(scene, wave.shadow, part);
+        else
+          trace<1>(scene, wave.shadow, part);
+      }
+  state.SetItemsProcessed(int64_t(state.iterations() * rec.rays.size()));
+  state.counters["rays_per_packet"] = double(rec.rays.size()) / double(packets);
+}
+
 void BM_SceneQueries(benchmark::State& state, const std::string& name) {
   const Recording& rec = recording(name);
   const EmbreeScene& accel = rec.scene->accel();
@@ -180,10 +291,16 @@ void BM_PathTracer(benchmark::State& state, const std::string& name) {
 BENCHMARK_CAPTURE(BM_Embree, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EmbreeBatched, cornell_box, std::string("cornell-box"))
+    ->ArgsProduct({{16, 256}, {1, 8, 16}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Embree, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Embree, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EmbreeBatched, million_triangles, std::string("million-triangles"))
+    ->ArgsProduct({{16, 256}, {1, 8, 16}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 
