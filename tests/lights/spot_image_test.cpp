@@ -118,10 +118,7 @@ TEST(SpotImage, LightTracingAgreesWithTheClosedFormRegionByRegion) {
             sum += radiance_at(std::hypot(f.x0 + (a + 0.5) * f.step / kSub, f.y0 + (b + 0.5) * f.step / kSub));
       }
     const int pixels = (regions[k].hi.x - regions[k].lo.x) * (regions[k].hi.y - regions[k].lo.y);
-    const test::RegionEstimate expected{sum / (double(pixels) * kSub * kSub), 0, 1};
-    EXPECT_LT(std::abs(test::difference_score(estimates[k], expected)), t_critical)
-        << "region (" << regions[k].lo.x << ", " << regions[k].lo.y << "): " << estimates[k].mean << " +- "
-        << estimates[k].standard_error << ", closed form " << expected.mean;
+    EXPECT_TRUE(test::agrees_with_exact(regions[k], estimates[k], sum / (double(pixels) * kSub * kSub), t_critical));
   }
 }
 

@@ -96,6 +96,13 @@ double difference_score(const RegionEstimate& a, const RegionEstimate& b) {
   return se2 > 0 ? (a.mean - b.mean) / std::sqrt(se2) : 0;
 }
 
+testing::AssertionResult agrees_with_exact(const Region& region, const RegionEstimate& estimate, double exact,
+                                           double t_critical) {
+  if (std::abs(difference_score(estimate, {exact, 0, 1})) < t_critical) return testing::AssertionSuccess();
+  return testing::AssertionFailure() << "region (" << region.lo.x << ", " << region.lo.y << "): " << estimate.mean
+                                     << " +- " << estimate.standard_error << ", exactly " << exact;
+}
+
 std::pair<double, double> mean_and_standard_error(const std::vector<double>& values) {
   double sum = 0, sum2 = 0;
   for (double x : values) sum += x;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -48,5 +50,11 @@ std::vector<RegionEstimate> reference_regions(const std::string& name, const std
 // (a - b) / sqrt(se_a^2 + se_b^2), for a two-sample test; a small relative
 // rounding spread keeps noise-free estimates comparable.
 double difference_score(const RegionEstimate& a, const RegionEstimate& b);
+
+// Whether a region's estimate agrees with a value known exactly (a closed
+// form): |difference_score| below t_critical; the failure names the region
+// and both values.
+testing::AssertionResult agrees_with_exact(const Region& region, const RegionEstimate& estimate, double exact,
+                                           double t_critical);
 
 }  // namespace caustica::test
