@@ -25,7 +25,8 @@ const std::pair<const char*, AovKind> kKinds[] = {{"albedo", AovKind::Albedo},
                                                   {"duv_dx", AovKind::DuvDx},
                                                   {"duv_dy", AovKind::DuvDy},
                                                   {"prim_index", AovKind::PrimIndex},
-                                                  {"shape_index", AovKind::ShapeIndex}};
+                                                  {"shape_index", AovKind::ShapeIndex},
+                                                  {"boundary_test", AovKind::BoundaryTest}};
 
 const char* suffixes(AovKind kind) {
   switch (kind) {
@@ -48,6 +49,8 @@ const char* suffixes(AovKind kind) {
       return "T";
     case AovKind::Coverage:
       return "A";
+    case AovKind::BoundaryTest:
+      return "";
   }
   return "";
 }
@@ -89,7 +92,7 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
     if (it == std::end(kKinds))
       throw std::invalid_argument("unknown kind '" + kind +
                                   "' (accepted: albedo, sh_normal, geo_normal, position, uv, depth, coverage, "
-                                  "dp_du, dp_dv, duv_dx, duv_dy, prim_index, shape_index)");
+                                  "dp_du, dp_dv, duv_dx, duv_dy, prim_index, shape_index, boundary_test)");
     out.push_back({item.substr(0, colon), it->second});
     start = end + 1;
   }
@@ -98,16 +101,25 @@ std::vector<AovSpec> parse_aov_list(const std::string& text) {
 
 std::vector<std::string> AovEvaluator::channels() const {
   std::vector<std::string> out;
-  for (const AovSpec& a : aovs_)
+  for (const AovSpec& a : aovs_) {
+    if (a.kind == AovKind::BoundaryTest) out.push_back(a.name.empty() ? "B" : a.name);
     for (const char* c = suffixes(a.kind); *c; ++c)
       out.push_back(a.name.empty() ? std::string(1, *c) : a.name + "." + *c);
+  }
   return out;
 }
 
 void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& si, std::span<float> out,
-                            const Sensor* sensor) const {
+                            const Scene* scene) const {
   std::fill(out.begin(), out.end(), 0.0f);
-  if (!si) return;
+  if (!si) {
+    size_t c = 0;
+    for (const AovSpec& a : aovs_) {
+      if (a.kind == AovKind::BoundaryTest) out[c] = 1;
+      c += a.kind == AovKind::BoundaryTest ? 1 : std::char_traits<char>::length(suffixes(a.kind));
+    }
+    return;
+  }
   size_t c = 0;
   const auto put = [&](Vec3 v, int n) {
     for (int i = 0; i < n; ++i) out[c++] = v[i];
@@ -145,7 +157,8 @@ void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteracti
         break;
       case AovKind::DuvDx:
       case AovKind::DuvDy: {
-        const Vec2 d = sensor ? uv_step(*sensor, ray, *si, a.kind == AovKind::DuvDx ? Vec2(1, 0) : Vec2(0, 1)) : Vec2();
+        const Vec2 d =
+            scene ? uv_step(scene->sensor(), ray, *si, a.kind == AovKind::DuvDx ? Vec2(1, 0) : Vec2(0, 1)) : Vec2();
         put({d.x, d.y, 0}, 2);
         break;
       }
@@ -155,6 +168,11 @@ void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteracti
         break;
       case AovKind::ShapeIndex:
         put({float(si->shape_index), 0, 0}, 1);
+        break;
+      // The shape the ray met at the top of the scene (an instance or a
+      // moving shape, not its group's or still shape) places the test.
+      case AovKind::BoundaryTest:
+        put({scene ? scene->accel().shape(si->shape_index).boundary_test(*si, normalize(ray.d)) : 1, 0, 0}, 1);
         break;
     }
   }

@@ -9,7 +9,7 @@
 #include "core/geometry/ray.h"
 
 namespace caustica {
-class Sensor;
+class Scene;
 }
 
 namespace caustica {
@@ -27,7 +27,8 @@ enum class AovKind {
   DuvDx,
   DuvDy,
   PrimIndex,
-  ShapeIndex
+  ShapeIndex,
+  BoundaryTest
 };
 
 struct AovSpec {
@@ -37,7 +38,7 @@ struct AovSpec {
 
 // Parses "name:kind,name:kind" (kinds: albedo, sh_normal, geo_normal,
 // position, uv, depth, coverage, dp_du, dp_dv, duv_dx, duv_dy, prim_index,
-// shape_index);
+// shape_index, boundary_test);
 // throws std::invalid_argument naming the bad item.
 std::vector<AovSpec> parse_aov_list(const std::string& text);
 
@@ -49,14 +50,16 @@ class AovEvaluator {
 
   // Channel names: name.R/G/B, name.X/Y/Z, name.U/V, name.T (depth),
   // name.A (coverage: 1 where the ray meets a surface, an alpha channel) or
-  // name.I (an index); without a name, only the suffix ("A").
+  // name.I (an index); without a name, only the suffix ("A");
+  // boundary_test's channel is the name alone, as in Mitsuba 3.
   std::vector<std::string> channels() const;
-  // The values at `hit`, the first surface `ray` meets (none: zeros).
-  // duv_dx and duv_dy, the change of (u, v) from one pixel to the next
-  // along x and y, need the `sensor` that made the ray (without one, or
-  // where the neighbouring rays miss the hit's tangent plane: zeros).
+  // The values at `hit`, the first surface `ray` meets (none: zeros, and
+  // 1 for boundary_test, as in Mitsuba 3). duv_dx and duv_dy, the change of
+  // (u, v) from one pixel to the next along x and y, need the `scene` whose
+  // sensor made the ray (without one, or where the neighbouring rays miss
+  // the hit's tangent plane: zeros); boundary_test needs its shapes.
   void evaluate(const Ray& ray, const std::optional<SurfaceInteraction>& hit, std::span<float> out,
-                const Sensor* sensor = nullptr) const;
+                const Scene* scene = nullptr) const;
 
  private:
   std::vector<AovSpec> aovs_;

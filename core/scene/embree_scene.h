@@ -24,6 +24,9 @@ class EmbreeScene {
   std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
   // Whether anything blocks the ray before t_max.
   bool occluded(const Ray& ray) const;
+  // The shape of Embree geometry `geom` at the top of the scene (an
+  // interaction's shape_index).
+  const Shape& shape(unsigned geom) const { return *by_geom_id_[geom]; }
   // Embree's scene, for benchmarks that measure Embree alone on the same geometry.
   RTCScene rtc_scene() const { return scene_; }
 

@@ -68,6 +68,8 @@ class DiskShape final : public AnalyticShape {
   }
 
   std::string kind() const override { return "disk"; }
+  // Mitsuba 3's rule for disks: 1 - r, the distance to the rim in radii.
+  float boundary_test(const SurfaceInteraction& si, Vec3) const override { return std::abs(1 - si.uv.x); }
   std::optional<Vec3> flat_normal() const override { return normal_; }
 
  private:

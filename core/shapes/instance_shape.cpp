@@ -109,6 +109,14 @@ class InstanceShape final : public Shape {
 
   uint32_t lobes() const override { return group_->lobes(); }
   std::string kind() const override { return "instance"; }
+  // The hit shape's own test, in the group's space (a mesh's barycentrics
+  // are read there).
+  float boundary_test(const SurfaceInteraction& si, Vec3 d) const override {
+    SurfaceInteraction local = si;
+    local.p = to_group_.point(si.p);
+    local.shading = Frame::from_normal(normalize(to_group_.normal(si.shading.n)));
+    return si.shape->boundary_test(local, normalize(to_group_.vector(d)));
+  }
 
  private:
   // A bound on the error of world = to_world_.point(p) when p itself is off by up

@@ -45,6 +45,8 @@ class MovingShape final : public Shape {
   uint32_t lobes() const override { return local_->lobes(); }
   std::vector<const Shape*> material_surfaces() const override { return local_->material_surfaces(); }
   std::string kind() const override { return local_->kind() + " (moving)"; }
+  // The still shape's own test, where it stands at the hit's time.
+  float boundary_test(const SurfaceInteraction& si, Vec3 d) const override;
 
  private:
   std::shared_ptr<Shape> local_;

@@ -4,6 +4,9 @@
 //       <transform name="to_world"><scale value="0.25"/></transform>
 //   </shape>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/registry/properties.h"
 #include "core/shapes/triangle_mesh.h"
 
@@ -18,6 +21,12 @@ MeshData unit_rectangle() {
 class RectangleShape final : public TriangleMesh {
  public:
   explicit RectangleShape(const Properties& props) : TriangleMesh(unit_rectangle(), props, "rectangle") {}
+
+  // Mitsuba 3's rule for rectangles: the distance to the nearest edge in
+  // (u, v), 1/2 at the centre.
+  float boundary_test(const SurfaceInteraction& si, Vec3) const override {
+    return std::min(0.5f - std::abs(si.uv.x - 0.5f), 0.5f - std::abs(si.uv.y - 0.5f));
+  }
 };
 
 }  // namespace CAUSTICA_UNITY_ID

@@ -24,6 +24,11 @@ using namespace CAUSTICA_UNITY_ID;
 
 uint32_t Shape::lobes() const { return bsdf_->lobes(); }
 
+float Shape::boundary_test(const SurfaceInteraction& si, Vec3 d) const {
+  if (si.shape && si.shape != this) return si.shape->boundary_test(si, d);
+  return std::abs(dot(si.shading.n, -d));
+}
+
 void Shape::line_crossings(const Ray&, std::vector<BoundaryCrossing>&) const {
   throw std::logic_error(kind() + " bounds no solid a line could cross");
 }

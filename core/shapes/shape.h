@@ -79,6 +79,13 @@ class Shape : public Plugin {
   // Why the shape cannot show `bsdf` (a curve, seen only from outside, and
   // a material that transmits); empty where it can.
   virtual std::string refused_material(const Bsdf&) const { return ""; }
+  // Mitsuba 3's boundary test at `si`, met by a ray along the unit
+  // direction `d`: a soft indicator, 0 at the shape's silhouette or edge
+  // and positive elsewhere (the aov kind boundary_test). By default the
+  // |cosine| between the shading normal and the ray (a sphere's, a
+  // cylinder's, a curve's); a shape whose hits are another's (CSG) asks
+  // that one.
+  virtual float boundary_test(const SurfaceInteraction& si, Vec3 d) const;
   // A null surface, which scatters nothing (a medium's index-matched
   // boundary): paths and the first-hit layers look through it.
   bool is_null() const;

@@ -1,5 +1,6 @@
 #include "core/shapes/triangle_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -175,6 +176,21 @@ PositionSample TriangleMesh::sample_position(Vec2 u) const {
   // Only the point, its error, normal and uv: no tangents or shading frame.
   const SurfacePoint sp = point_at(corners(unsigned(tri)), b.y, 1 - b.x - b.y);
   return {sp.p, sp.p_error, sp.ng, sp.uv, 1 / area_};
+}
+
+float TriangleMesh::boundary_test(const SurfaceInteraction& si, Vec3 d) const {
+  if (!mesh_.normals.empty() && !mesh_.face_normals) {
+    const float cosine = dot(si.shading.n, -d);
+    return cosine * cosine;
+  }
+  const uint32_t* v = &mesh_.indices[size_t(si.prim) * 3];
+  const Vec3 p0 = mesh_.positions[v[0]], e1 = mesh_.positions[v[1]] - p0, e2 = mesh_.positions[v[2]] - p0;
+  const Vec3 q = si.p - p0;
+  const double a = dot(e1, e1), b = dot(e1, e2), c = dot(e2, e2), det = a * c - b * b;
+  if (!(det > 0)) return 0;
+  const double qe1 = dot(q, e1), qe2 = dot(q, e2);
+  const double b1 = (c * qe1 - b * qe2) / det, b2 = (a * qe2 - b * qe1) / det;
+  return float(3 * std::clamp(std::min({1 - b1 - b2, b1, b2}), 0.0, 1.0 / 3));
 }
 
 }  // namespace caustica

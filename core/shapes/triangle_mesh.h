@@ -43,6 +43,11 @@ class TriangleMesh : public Shape {
   // Triangles with an area in the mesh's own space and none once stored.
   size_t collapsed_triangles() const { return collapsed_; }
   std::optional<Vec3> flat_normal() const override { return flat_normal_; }
+  // Mitsuba 3's rule for meshes: with vertex normals, the squared cosine
+  // between the interpolated normal and the ray; without, the distance to
+  // the triangle's nearest edge in barycentric terms, 1 at its centroid
+  // (3 min(b0, b1, b2)).
+  float boundary_test(const SurfaceInteraction& si, Vec3 d) const override;
 
  private:
   // A point at barycentrics (b1, b2) of a triangle: position and its

@@ -14,6 +14,8 @@
 //   dp_dv       the same along v
 //   prim_index  the primitive met within its shape (a mesh's triangle): name.I
 //   shape_index the shape met, by its place among the scene's shapes: name.I
+//   boundary_test Mitsuba 3's soft indicator of the shape's silhouette and
+//               edges (0 there, positive elsewhere; 1 on a miss): name
 // Rays that miss write zeros. Media and their null boundaries are looked
 // through: the values are those of the first surface that scatters light.
 // Albedo is the RGB albedo in either transport mode. Indices are exact up to
@@ -107,7 +109,7 @@ class AovEstimator final : public PixelEstimator {
       estimators_[i]->sample(pixel, ray, sampler, out.subspan(at, widths_[i]));
       at += widths_[i];
     }
-    evaluator_.evaluate(ray, scene_.intersect_shown(ray), out.subspan(at), &scene_.sensor());
+    evaluator_.evaluate(ray, scene_.intersect_shown(ray), out.subspan(at), &scene_);
   }
 
   std::string summary() const override {
@@ -170,7 +172,7 @@ CAUSTICA_REGISTER_PLUGIN(
     AovIntegrator, "integrator", "aov",
     {{"aovs", ParamType::String, "albedo:albedo,nn:sh_normal,dd:depth",
       "comma-separated name:kind pairs; kinds albedo, sh_normal, geo_normal, position, uv, depth, coverage, dp_du, "
-      "dp_dv, duv_dx, duv_dy, prim_index, shape_index"}},
+      "dp_dv, duv_dx, duv_dy, prim_index, shape_index, boundary_test"}},
     {"integrator"});
 
 }  // namespace caustica
