@@ -120,66 +120,6 @@ const Recording& recording(const std::string& name) {
   return it->second;
 }
 
-// Traces the recorded rays through Embree alone.
-void replay_with_embree(const Recording& rec) {
-  const RTCScene scene = rec.scene->accel().rtc_scene();
-  for (const RayLog::Entry& e : rec.rays) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    if (e.shadow) {
-      RTCRay r = to_rtc(e.ray);
-      rtcOccluded1(scene, &context, &r);
-      benchmark::DoNotOptimize(r.tfar);
-    } else {
-      RTCRayHit hit{};
-      hit.ray = to_rtc(e.ray);
-      hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(scene, &context, &hit);
-      benchmark::DoNotOptimize(hit.hit.geomID);
-    }
-  }
-}
-
-void BM_Embree(benchmark::State& state, const std::string& name) {
-  const Recording& rec = recording(name);
-  for (auto _ : state) replay_with_embree(rec);
-  state.SetItemsProcessed(int64_t(state.iterations() * rec.rays.size()));
-}
-
-// The recorded rays regrouped as a walk over batches of `batch` paths
-// would ask for them, a wave at a time: the batch's camera rays, then its
-// first shadow rays, its first bounce rays, its second shadow rays, and so
-// on. A path starts at its camera ray, which (the scenes' pinhole's) leaves
-// from the camera's position, as no other closest-hit ray does.
-struct Wave {
-  bool shadow = false;
-  std::vector<RTCRay> rays;
-};
-
-std::vector<Wave> batched_waves(const Recording& rec, size_t batch) {
-  const Vec3 eye = rec.rays.front().ray.o;
-  std::vector<std::array<std::vector<RTCRay>, 2>> paths;  // per path: its closest-hit rays, its shadow rays
-  for (const RayLog::Entry& e : rec.rays) {
-    if (!e.shadow && e.ray.o == eye) paths.emplace_back();
-    paths.back()[e.shadow].push_back(to_rtc(e.ray));
-  }
-  std::vector<Wave> waves;
-  for (size_t first = 0; first < paths.size(); first += batch) {
-    const size_t end = std::min(paths.size(), first + batch);
-    for (size_t k = 0, left = 1; left > 0; ++k) {
-      left = 0;
-      for (const bool shadow : {false, true}) {
-        Wave wave{shadow, {}};
-        for (size_t i = first; i < end; ++i)
-          if (k < paths[i][shadow].size()) wave.rays.push_back(paths[i][shadow][k]);
-        left += wave.rays.size();
-        if (!wave.rays.empty()) waves.push_back(std::move(wave));
-      }
-    }
-  }
-  return waves;
-}
-
 // Up to N rays in one of Embree's packets of N (8 or 16), or one by one (N = 1).
 template <int N>
 void trace(RTCScene scene, bool shadow, std::span<const RTCRay> part) {
@@ -224,6 +164,55 @@ void trace(RTCScene scene, bool shadow, std::span<const RTCRay> part) {
     benchmark::DoNotOptimize(rays.ray.tfar[0]);
     benchmark::DoNotOptimize(rays.hit.geomID[0]);
   }
+}
+
+// Traces the recorded rays through Embree alone.
+void replay_with_embree(const Recording& rec) {
+  const RTCScene scene = rec.scene->accel().rtc_scene();
+  for (const RayLog::Entry& e : rec.rays) {
+    const RTCRay r = to_rtc(e.ray);
+    trace<1>(scene, e.shadow, {&r, 1});
+  }
+}
+
+void BM_Embree(benchmark::State& state, const std::string& name) {
+  const Recording& rec = recording(name);
+  for (auto _ : state) replay_with_embree(rec);
+  state.SetItemsProcessed(int64_t(state.iterations() * rec.rays.size()));
+}
+
+// The recorded rays regrouped as a walk over batches of `batch` paths
+// would ask for them, a wave at a time: the batch's camera rays, then its
+// first shadow rays, its first bounce rays, its second shadow rays, and so
+// on. A path starts at its camera ray, which (the scenes' pinhole's) leaves
+// from the camera's position, as no other closest-hit ray does.
+struct Wave {
+  bool shadow = false;
+  std::vector<RTCRay> rays;
+};
+
+std::vector<Wave> batched_waves(const Recording& rec, size_t batch) {
+  const Vec3 eye = rec.rays.front().ray.o;
+  std::vector<std::array<std::vector<RTCRay>, 2>> paths;  // per path: its closest-hit rays, its shadow rays
+  for (const RayLog::Entry& e : rec.rays) {
+    if (!e.shadow && e.ray.o == eye) paths.emplace_back();
+    paths.back()[e.shadow].push_back(to_rtc(e.ray));
+  }
+  std::vector<Wave> waves;
+  for (size_t first = 0; first < paths.size(); first += batch) {
+    const size_t end = std::min(paths.size(), first + batch);
+    for (size_t k = 0, left = 1; left > 0; ++k) {
+      left = 0;
+      for (const bool shadow : {false, true}) {
+        Wave wave{shadow, {}};
+        for (size_t i = first; i < end; ++i)
+          if (k < paths[i][shadow].size()) wave.rays.push_back(paths[i][shadow][k]);
+        left += wave.rays.size();
+        if (!wave.rays.empty()) waves.push_back(std::move(wave));
+      }
+    }
+  }
+  return waves;
 }
 
 // Batches of range(0) paths, their waves traced in packets of range(1)

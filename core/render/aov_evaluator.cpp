@@ -55,6 +55,12 @@ const char* suffixes(AovKind kind) {
   return "";
 }
 
+// How many channels a kind writes: one per suffix, boundary_test's one
+// named by the aov alone.
+size_t width(AovKind kind) {
+  return kind == AovKind::BoundaryTest ? 1 : std::char_traits<char>::length(suffixes(kind));
+}
+
 // d(u, v) between the pixel `ray` leaves through and its neighbour one
 // pixel along `step`: the neighbour's ray (through the lens centre) meets
 // the hit's tangent plane at p + dp, and dp = dp/du du + dp/dv dv is solved
@@ -116,7 +122,7 @@ void AovEvaluator::evaluate(const Ray& ray, const std::optional<SurfaceInteracti
     size_t c = 0;
     for (const AovSpec& a : aovs_) {
       if (a.kind == AovKind::BoundaryTest) out[c] = 1;
-      c += a.kind == AovKind::BoundaryTest ? 1 : std::char_traits<char>::length(suffixes(a.kind));
+      c += width(a.kind);
     }
     return;
   }

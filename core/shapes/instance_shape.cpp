@@ -112,10 +112,7 @@ class InstanceShape final : public Shape {
   // The hit shape's own test, in the group's space (a mesh's barycentrics
   // are read there).
   float boundary_test(const SurfaceInteraction& si, Vec3 d) const override {
-    SurfaceInteraction local = si;
-    local.p = to_group_.point(si.p);
-    local.shading = Frame::from_normal(normalize(to_group_.normal(si.shading.n)));
-    return si.shape->boundary_test(local, normalize(to_group_.vector(d)));
+    return boundary_test_in(*si.shape, si, d, to_group_);
   }
 
  private:

@@ -103,11 +103,7 @@ Bounds3 MovingShape::bounds() const {
 PositionSample MovingShape::sample_position(Vec2) const { throw std::logic_error("a moving shape carries no emitter"); }
 
 float MovingShape::boundary_test(const SurfaceInteraction& si, Vec3 d) const {
-  const Transform to_local = motion_.at(si.time).inverse();
-  SurfaceInteraction local = si;
-  local.p = to_local.point(si.p);
-  local.shading = Frame::from_normal(normalize(to_local.normal(si.shading.n)));
-  return local_->boundary_test(local, normalize(to_local.vector(d)));
+  return boundary_test_in(*local_, si, d, motion_.at(si.time).inverse());
 }
 
 }  // namespace caustica

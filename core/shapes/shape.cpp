@@ -29,6 +29,13 @@ float Shape::boundary_test(const SurfaceInteraction& si, Vec3 d) const {
   return std::abs(dot(si.shading.n, -d));
 }
 
+float Shape::boundary_test_in(const Shape& shape, const SurfaceInteraction& si, Vec3 d, const Transform& to_local) {
+  SurfaceInteraction local = si;
+  local.p = to_local.point(si.p);
+  local.shading = Frame::from_normal(normalize(to_local.normal(si.shading.n)));
+  return shape.boundary_test(local, normalize(to_local.vector(d)));
+}
+
 void Shape::line_crossings(const Ray&, std::vector<BoundaryCrossing>&) const {
   throw std::logic_error(kind() + " bounds no solid a line could cross");
 }

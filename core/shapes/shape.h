@@ -9,6 +9,7 @@
 
 #include "core/geometry/bounds.h"
 #include "core/geometry/interaction.h"
+#include "core/math/transform.h"
 #include "core/registry/plugin.h"
 #include "core/shapes/boundary_crossing.h"
 
@@ -86,6 +87,13 @@ class Shape : public Plugin {
   // cylinder's, a curve's); a shape whose hits are another's (CSG) asks
   // that one.
   virtual float boundary_test(const SurfaceInteraction& si, Vec3 d) const;
+
+ protected:
+  // The boundary test of `shape`, asked in the space `to_local` maps `si`
+  // and `d` into (an instance's group, a moving shape's still pose).
+  static float boundary_test_in(const Shape& shape, const SurfaceInteraction& si, Vec3 d, const Transform& to_local);
+
+ public:
   // A null surface, which scatters nothing (a medium's index-matched
   // boundary): paths and the first-hit layers look through it.
   bool is_null() const;

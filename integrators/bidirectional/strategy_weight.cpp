@@ -63,7 +63,7 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
                               ? !origin.environment && !origin.delta_light
                               : (i == 0 || (i == s && joined) || !camera[j].delta) && (sp == k || !camera[j - 1].delta);
     if (possible && merging.connections) sum += h(heuristic, r);
-    if (merges && i >= 1 && mergeable(camera[j]) && ((i == s && joined) || !camera[j].delta) && merge_allowed(i))
+    if (merges && i >= 1 && ((i == s && joined) || !camera[j].delta) && merge_allowed(i) && mergeable(camera[j]))
       sum += h(heuristic, r * remap(camera[j].pdf_fwd) * merging.eta);
   }
   if (t >= 4 && camera[t - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * camera[t - 3].mis_partial);
@@ -77,7 +77,7 @@ float ratio_sum(std::span<const PathVertex> light, std::span<const PathVertex> c
     const bool possible =
         sp == 0 ? !origin.delta_light : (sp == 1 || !light[sp - 1].delta) && (sp == s - 1 || !light[sp].delta);
     if (possible && (merging.connections || sp == 0)) sum += h(heuristic, r);
-    if (merges && sp >= 1 && mergeable(light[sp]) && (sp == s - 1 || !light[sp].delta) && merge_allowed(sp))
+    if (merges && sp >= 1 && (sp == s - 1 || !light[sp].delta) && merge_allowed(sp) && mergeable(light[sp]))
       sum += h(heuristic, r * remap(light[sp].pdf_fwd) * merging.eta);
   }
   if (s >= 3 && light[s - 3].mis_partial > 0) sum += float(h(heuristic, double(r)) * light[s - 3].mis_partial);
@@ -182,7 +182,7 @@ void sum_partial_ratios(std::span<PathVertex> path, MisHeuristic heuristic, cons
       here = v.kind == PathVertex::Kind::Light && !v.delta_light ? 1 : 0;
     } else {
       if (merging.connections && !v.delta && (n == 1 || !path[n - 1].delta)) here += 1;
-      if (merges && mergeable(v) && !v.delta && (!merging.after_delta_only || next_toward_camera_delta(n)))
+      if (merges && !v.delta && (!merging.after_delta_only || next_toward_camera_delta(n)) && mergeable(v))
         here += h(heuristic, double(remap(v.pdf_fwd)) * merging.eta);
     }
     // With no strategy yet the ratio is not read: the camera's own reverse

@@ -324,7 +324,7 @@ void VcmPixels::camera_sample(Sampler& sampler, Vec2i pixel, uint64_t iteration,
 // end, and its value is the photon density estimate's (photon_density.h).
 Color VcmPixels::merge(const std::vector<PathVertex>& camera, int t, float radius) const {
   const PathVertex& cv = camera[t - 1];
-  if (!mergeable(cv) || (merging_.after_delta_only && (t < 3 || !camera[t - 2].delta))) return {};
+  if ((merging_.after_delta_only && (t < 3 || !camera[t - 2].delta)) || !mergeable(cv)) return {};
   const int64_t max_depth = vcm_.settings_.max_depth;
   const Vec3 wo = direction_to(cv, camera[t - 2]);
   const std::span<const PathVertex> camera_part = std::span(camera).first(t - 1);
