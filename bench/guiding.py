@@ -28,7 +28,7 @@ import convergence
 from caustica_cli import read_metadata
 from caustica_inprocess import runner
 from reference import make_reference
-from suite_config import RUN_SEED_BASE, spp_ladder
+from suite_config import spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ["cornell-box", "cornell-box-baffle", "door-ajar"]
@@ -52,21 +52,6 @@ def efficiency_table(rows):
                        r["rel_mse"] * r["seconds"] / path_cost if path_cost else float("nan"))
                       for name, r in runs.items()]
     return out
-
-
-def retime_longest(caustica, scene, scene_path, rows, ladder, res, renders, repeat):
-    """Renders each integrator's longest run of `scene` repeat - 1 more times, taking turns, and keeps the
-    least seconds in its row. The image is the same each time (same seed); its samples are checked."""
-    longest = [r for r in rows if r["scene"] == scene and r["spp"] == ladder[-1]]
-    for _ in range(repeat - 1):
-        for row in longest:
-            again = renders / f"{row['integrator']}-retimed.exr"
-            metadata = caustica.render(scene_path, again, integrator=row["integrator"], spp=row["spp"],
-                                       seed=RUN_SEED_BASE + len(ladder) - 1, res=res)
-            if int(metadata["samples"]) != row["samples"]:
-                raise RuntimeError(f"{scene} / {row['integrator']}: a repeated run took {metadata['samples']} "
-                                   f"samples, the first {row['samples']}")
-            row["seconds"] = min(row["seconds"], float(metadata["seconds"]))
 
 
 def write_markdown(path, table, guiding_runs, command, repeat=1):
@@ -137,8 +122,8 @@ def main():
         renders = out / "renders" / scene
         scene_rows = convergence.run_scene(caustica, scene, scene_path, reference, INTEGRATORS,
                                            spp_ladder(args.max_spp), args.res, renders, {})
-        retime_longest(caustica, scene, scene_path, scene_rows, spp_ladder(args.max_spp), args.res, renders,
-                       args.repeat)
+        convergence.retime_longest(caustica, scene, scene_path, scene_rows, spp_ladder(args.max_spp), args.res,
+                                   renders, args.repeat)
         rows += scene_rows
         longest = convergence.render_path(renders, "guided_path", spp_ladder(args.max_spp)[-1])
         if longest.exists():

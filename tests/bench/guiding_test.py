@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BINARY = os.environ.get("CAUSTICA_BINARY", str(ROOT / "build" / "caustica"))
 sys.path.insert(0, str(ROOT / "bench"))
 
-import guiding  # noqa: E402
+import convergence  # noqa: E402
 
 
 class ClockStub:
@@ -62,17 +62,18 @@ class RetimeLongest(unittest.TestCase):
     def test_keeps_the_least_seconds_of_the_longest_runs(self):
         rows = self.rows()
         stub = ClockStub({"path": [4.0, 6.0], "guided_path": [7.0, 3.5]})
-        guiding.retime_longest(stub, "box", "box.xml", rows, [1, 2], 8, Path("unused"), 3)
+        convergence.retime_longest(stub, "box", "box.xml", rows, [1, 2], 8, Path("unused"), 3)
+        # The stub's clock readings, not a measurement: which of them each row keeps.
         seconds = {(r["integrator"], r["spp"]): r["seconds"] for r in rows}
         self.assertEqual(seconds, {("path", 1): 5.0, ("path", 2): 4.0, ("guided_path", 1): 5.0,
                                    ("guided_path", 2): 3.5})
         # Taking turns, each with the longest run's own seed.
-        seed = guiding.RUN_SEED_BASE + 1
+        seed = convergence.ladder_seed(1)
         self.assertEqual(stub.calls, [("path", 2, seed), ("guided_path", 2, seed)] * 2)
 
     def test_a_repeat_that_took_other_samples_is_an_error(self):
         with self.assertRaisesRegex(RuntimeError, "box / path: a repeated run took 32 samples, the first 64"):
-            guiding.retime_longest(ClockStub({"path": [1.0]}, samples=32), "box", "box.xml",
+            convergence.retime_longest(ClockStub({"path": [1.0]}, samples=32), "box", "box.xml",
                                    self.rows()[:2], [1, 2], 8, Path("unused"), 2)
 
 
