@@ -10,11 +10,6 @@
 // EmbreeBatched/B/N replays the same rays as a walk over batches of B
 // paths would ask for them, in packets of N (1, 8 or 16): what tracing in
 // packets, the traversal half of a batched walk, could gain.
-// Walk/scalar and Walk/batched/B/N time the path tracer's walk alone (camera
-// rays, bounces, next-event estimation; no film) over the same samples, one
-// path at a time and in batches of B paths whose waves are traced N rays at
-// a time (bench/batched_path_walk.h); the batched walk's radiance is
-// checked to be the scalar walk's, bit for bit, before it is timed.
 // Beside the Cornell boxes, a generated scene holds a million-triangle mesh
 // (a bumpy sphere in the Cornell room), where traversal dominates.
 
@@ -22,7 +17,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -32,7 +26,6 @@
 #include <string>
 #include <vector>
 
-#include "bench/batched_path_walk.h"
 #include "core/job/render_job.h"
 #include "core/loader/scene_loader.h"
 
@@ -284,54 +277,11 @@ void BM_PathTracer(benchmark::State& state, const std::string& name) {
   state.counters["of_embree"] = (double(rays) / path_seconds) / (embree_rays / embree_seconds);
 }
 
-// Every pixel's kSpp camera samples, pixel by pixel.
-std::vector<CameraSampleKey> every_sample() {
-  std::vector<CameraSampleKey> keys;
-  for (int y = 0; y < kRes; ++y)
-    for (int x = 0; x < kRes; ++x)
-      for (uint64_t i = 0; i < kSpp; ++i) keys.push_back({{x, y}, i});
-  return keys;
-}
-
-void BM_WalkScalar(benchmark::State& state, const std::string& name) {
-  const Recording& rec = recording(name);
-  const std::vector<CameraSampleKey> keys = every_sample();
-  std::vector<Color> out(keys.size());
-  uint64_t seed = 1;
-  for (auto _ : state) trace_scalar(*rec.scene, PathSettings{}, seed++, keys, out);
-  state.SetItemsProcessed(int64_t(state.iterations() * keys.size()));
-}
-
-void BM_WalkBatched(benchmark::State& state, const std::string& name) {
-  const Recording& rec = recording(name);
-  const std::vector<CameraSampleKey> keys = every_sample();
-  const size_t batch = size_t(state.range(0));
-  const int packet = int(state.range(1));
-  std::vector<Color> scalar(keys.size()), out(keys.size());
-  trace_scalar(*rec.scene, PathSettings{}, 1, keys, scalar);
-  trace_batched(*rec.scene, PathSettings{}, 1, keys, batch, packet, out);
-  size_t differ = 0;
-  for (size_t i = 0; i < keys.size(); ++i)
-    for (int c = 0; c < 3; ++c) differ += std::bit_cast<uint32_t>(scalar[i][c]) != std::bit_cast<uint32_t>(out[i][c]);
-  if (differ > 0) {
-    state.SkipWithError(
-        ("batched radiance differs from the scalar walk's in " + std::to_string(differ) + " values").c_str());
-    return;
-  }
-  uint64_t seed = 1;
-  for (auto _ : state) trace_batched(*rec.scene, PathSettings{}, seed++, keys, batch, packet, out);
-  state.SetItemsProcessed(int64_t(state.iterations() * keys.size()));
-}
-
 BENCHMARK_CAPTURE(BM_Embree, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EmbreeBatched, cornell_box, std::string("cornell-box"))
     ->ArgsProduct({{16, 256}, {1, 8, 16}})
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WalkScalar, cornell_box, std::string("cornell-box"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WalkBatched, cornell_box, std::string("cornell-box"))
-    ->ArgsProduct({{64, 256}, {1, 16}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Embree, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, cornell_box_glass, std::string("cornell-box-glass"))->Unit(benchmark::kMillisecond);
@@ -342,10 +292,6 @@ BENCHMARK_CAPTURE(BM_EmbreeBatched, million_triangles, std::string("million-tria
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SceneQueries, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PathTracer, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WalkScalar, million_triangles, std::string("million-triangles"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WalkBatched, million_triangles, std::string("million-triangles"))
-    ->ArgsProduct({{64, 256}, {1, 16}})
-    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace caustica

@@ -14,30 +14,18 @@ std::optional<ChosenLight> choose_light(const Scene& scene, const ReferencePoint
   return ChosenLight{*ls, choice->pmf * ls->pdf, choice->emitter};
 }
 
-std::optional<UntestedLightSample> untested_light_sample(const Scene& scene, const SurfaceInteraction& si,
-                                                         const SurfaceBsdf& bsdf, Vec3 wo, float u_select,
-                                                         Vec2 u_light) {
-  const auto light = choose_light(scene, {si.p, si.p_error, si.ng, si.time}, u_select, u_light);
-  if (!light) return std::nullopt;
-  const auto [bsdf_f, bsdf_pdf] = bsdf.eval_and_pdf(wo, light->ls.wi);
-  const Color f = bsdf_f * abs_dot(light->ls.wi, si.shading.n);
-  if (f.is_black()) return std::nullopt;
-  return UntestedLightSample{*light, f, bsdf_pdf};
-}
-
-Color unoccluded_contribution(const UntestedLightSample& s, float n_light, float n_bsdf, const Wavelengths* wavelengths,
-                              const ScatterDensity* density) {
-  return s.f * emission_for(*s.light.emitter, s.light.ls.Li, wavelengths) *
-         (s.light.mis_weight(scatter_pdf(density, s.light.ls.wi, s.bsdf_pdf), n_light, n_bsdf) / s.light.pdf);
-}
-
 Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, const SurfaceBsdf& bsdf, Vec3 wo,
                           float u_select, Vec2 u_light, float n_light, float n_bsdf, const Wavelengths* wavelengths,
                           const ScatterDensity* density) {
-  const auto s = untested_light_sample(scene, si, bsdf, wo, u_select, u_light);
-  if (!s) return {};
-  if (scene.occluded(shadow_ray(si, s->light.ls))) return {};
-  return unoccluded_contribution(*s, n_light, n_bsdf, wavelengths, density);
+  const auto light = choose_light(scene, {si.p, si.p_error, si.ng, si.time}, u_select, u_light);
+  if (!light) return {};
+  const LiSample& ls = light->ls;
+  const auto [bsdf_f, bsdf_pdf] = bsdf.eval_and_pdf(wo, ls.wi);
+  const Color f = bsdf_f * abs_dot(ls.wi, si.shading.n);
+  if (f.is_black()) return {};
+  if (scene.occluded(shadow_ray(si, ls))) return {};
+  return f * emission_for(*light->emitter, ls.Li, wavelengths) *
+         (light->mis_weight(scatter_pdf(density, ls.wi, bsdf_pdf), n_light, n_bsdf) / light->pdf);
 }
 
 float bsdf_sample_mis_weight(const Scene& scene, const Emitter& emitter, const ReferencePoint& from, Vec3 wi,

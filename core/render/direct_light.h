@@ -43,21 +43,6 @@ Color sample_direct_light(const Scene& scene, const SurfaceInteraction& si, cons
                           float u_select, Vec2 u_light, float n_light = 1, float n_bsdf = 1,
                           const Wavelengths* wavelengths = nullptr, const ScatterDensity* density = nullptr);
 
-// Next-event estimation up to its shadow ray, for a walk that traces its
-// shadow rays apart (shadow_ray(si, light.ls)): the light chosen and the
-// BSDF's value toward it, |cos| included; and, once the shadow ray is found
-// unoccluded, what sample_direct_light returns.
-struct UntestedLightSample {
-  ChosenLight light;
-  Color f;
-  float bsdf_pdf;
-};
-std::optional<UntestedLightSample> untested_light_sample(const Scene& scene, const SurfaceInteraction& si,
-                                                         const SurfaceBsdf& bsdf, Vec3 wo, float u_select,
-                                                         Vec2 u_light);
-Color unoccluded_contribution(const UntestedLightSample& s, float n_light = 1, float n_bsdf = 1,
-                              const Wavelengths* wavelengths = nullptr, const ScatterDensity* density = nullptr);
-
 // The shadow ray from `si` toward the chosen light.
 inline Ray shadow_ray(const SurfaceInteraction& si, const LiSample& ls) {
   return ls.is_infinite ? si.spawn(ls.wi) : si.spawn_to(ls.p, ls.p_error, ls.n);

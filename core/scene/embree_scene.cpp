@@ -46,10 +46,6 @@ std::optional<SurfaceInteraction> EmbreeScene::intersect(const Ray& ray) const {
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayhit);
-  return interaction_of(ray, rayhit);
-}
-
-std::optional<SurfaceInteraction> EmbreeScene::interaction_of(const Ray& ray, const RTCRayHit& rayhit) const {
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   const RayHit hit{rayhit.ray.tfar,
                    rayhit.hit.primID,

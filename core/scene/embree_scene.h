@@ -22,9 +22,6 @@ class EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
-  // The hit Embree reported for `ray` (by rtcIntersect1 or a lane of a
-  // packet), as intersect() returns it.
-  std::optional<SurfaceInteraction> interaction_of(const Ray& ray, const RTCRayHit& rayhit) const;
   // Whether anything blocks the ray before t_max.
   bool occluded(const Ray& ray) const;
   // The shape of Embree geometry `geom` at the top of the scene (an
