@@ -36,6 +36,11 @@
 // unit of error, guiding stops and every later sample is path's. The
 // decision uses earlier samples only, so each later sample stays unbiased.
 //
+// After the training, roulette is adjoint-driven where a path's region
+// has learnt the radiance it sends back (GuidedRadiance::adjoint_survival):
+// camera paths of the training passes record it at every vertex they
+// could guide.
+//
 // Records are summed in fixed point (FixedPointSum), and the trees are
 // rebuilt from them between passes in one thread, so the image is the same
 // for any thread count. A render of a range of samples, a replayed sample
@@ -128,6 +133,10 @@ class GuidedPathIntegrator final : public PixelIntegrator {
            "where a guide learnt from fewer than " + std::to_string(guiding_.refinement.min_records) + " records" +
            (scene.features().media ? "; media: scattering in a medium follows its phase function, unguided" : "") +
            "; trees capped at " + std::to_string(guiding_.refinement.max_bytes >> 20) + " MiB" +
+           (guiding_.adjoint_roulette > 0
+                ? "; after the training, roulette by expected contribution (adjoint_roulette " +
+                      std::to_string(guiding_.adjoint_roulette) + ")"
+                : std::string("; path's roulette")) +
            (guiding_.always_guide ? std::string("; guides every pass (always_guide)")
                                   : std::string("; guiding stops after a training pass whose guided samples cost more "
                                                 "per unit of error than pass 0's unguided ones"));
@@ -156,6 +165,7 @@ GuidedEstimator::GuidedEstimator(const GuidedPathIntegrator& integrator, const S
       payoff_(std::make_unique<GuidingPayoff>(scene.sensor().film()->width(), scene.sensor().film()->height())) {
   walk_.bsdf_fraction = guiding_.bsdf_fraction;
   walk_.camera_directions = !(guiding_.light_paths > 0);
+  walk_.adjoint_roulette = guiding_.adjoint_roulette;
 }
 
 bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {

@@ -82,6 +82,7 @@ class PathRadiance {
   // Where the walk samples directions by other than the BSDF, its density
   // at the current vertex, for next-event estimation's weight.
   const ScatterDensity* density_ = nullptr;
+  Sampler& sampler() { return sampler_; }
 
  private:
   // The caustic estimator has the light this path finds next when the path

@@ -21,6 +21,8 @@ struct GuidedWalk {
   // Whether camera paths' records teach directions too (else light paths
   // alone do, and camera paths only count toward halving regions).
   bool camera_directions = true;
+  // GuidingSettings::adjoint_roulette; 0 leaves roulette to path's rule.
+  float adjoint_roulette = 0;
 };
 
 // Whether a vertex of these lobes is guided: not where any lobe is a delta
@@ -42,7 +44,9 @@ inline float mixture_pdf(float a, float bsdf_pdf, float guide_square_pdf) {
 // direction, over the density it was drawn with: an estimate of the
 // radiance's integral over each directional quadrant, which the next pass
 // samples in proportion to. Where light paths teach them, it only counts
-// its vertices per region, toward halving it.
+// its vertices per region, toward halving it. Either way it records the
+// radiance each such vertex sent back along the path, which adjoint-driven
+// roulette weighs later paths by.
 template <bool kMedia>
 class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
  public:
@@ -53,6 +57,8 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   WalkAction at_vertex(const WalkVertex& v) {
     region_ = nullptr;
     guide_ = nullptr;
+    adjoint_ = false;
+    arrived_with_ = this->L;
     if ((walk_.guide || walk_.record) && guidable(v.bsdf.lobes())) {
       region_ = &tree_.region_at(v.si.p);
       bucket_ = normal_bucket(dot(v.si.ng, v.wo) < 0 ? -v.si.ng : v.si.ng);
@@ -66,7 +72,15 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   }
 
   std::optional<BsdfSample> sample_scattering(const WalkVertex& v, float u_lobe, Vec2 u) {
+    if (region_ && walk_.record && radiance_pending_ < radiance_records_.size())
+      radiance_records_[radiance_pending_++] = {&region_->guides[bucket_],
+                                                {arrived_with_.r, arrived_with_.g, arrived_with_.b},
+                                                {v.beta.r, v.beta.g, v.beta.b}};
+    const float survival =
+        region_ && walk_.guide && !walk_.record && walk_.adjoint_roulette > 0 ? adjoint_survival(v) : 1;
+    if (survival < 1 && !(this->sampler().next_1d() < survival)) return std::nullopt;
     auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
+    if (bs && survival < 1) bs->f = bs->f * (1 / survival);
     if (bs && region_ && walk_.record && !walk_.camera_directions) region_->count();
     if (bs && region_ && walk_.record && walk_.camera_directions && pending_ < records_.size()) {
       const Color beta_after = v.beta * (bs->f * (abs_dot(bs->wi, v.si.shading.n) / bs->pdf));
@@ -86,13 +100,28 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   // weighed it: a direction the guide prefers has a high density and so a
   // small weight, and a roulette on that weight would end the path in
   // proportion as the guide sent it toward the light, undoing the guide.
+  //
+  // Where adjoint-driven roulette judged the vertex, path's rule leaves it
+  // alone: its throughput does not change there.
   Color roulette_weight(const WalkVertex& v, const BsdfSample& bs) const {
+    if (adjoint_) return Color(1);
     const float p = guide_ && bsdf_pdf_ > 0 ? bsdf_pdf_ : bs.pdf;
     return bs.f * (abs_dot(bs.wi, v.si.shading.n) / p);
   }
 
   // Records what the finished path found beyond each recorded vertex.
   void finish() {
+    for (size_t i = 0; i < radiance_pending_; ++i) {
+      const RadianceRecord& r = radiance_records_[i];
+      double sum = 0;
+      int channels = 0;
+      for (int c = 0; c < 3; ++c)
+        if (r.beta[c] > 0) {
+          sum += std::max(0.0f, this->L[c] - r.before[c]) / double(r.beta[c]);
+          ++channels;
+        }
+      if (channels) r.guide->record_radiance(sum / channels);
+    }
     for (size_t i = 0; i < pending_; ++i) {
       const Record& r = records_[i];
       double sum = 0;
@@ -111,6 +140,25 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
  private:
   float pdf(Vec3 wi, float bsdf_pdf) const override {
     return mixture_pdf(walk_.bsdf_fraction, bsdf_pdf, guide_->pdf(direction_to_square(wi)));
+  }
+
+  // Adjoint-driven roulette (Vorba and Křivánek 2016), without its
+  // splitting: what the path may still bring back is its weight times the
+  // radiance its region was learnt to send, and its pixel's value is
+  // taken to be what the path's first such vertex was learnt to send. A
+  // path below `adjoint_roulette` of that survives with probability its
+  // share over adjoint_roulette. Path's rule (a fixed depth, then a
+  // throughput below 0.1) may end a dim path in a bright room, whose rare
+  // survivors then carry large weights, and keeps a path in a dark corner
+  // going; this rule does the reverse. Any survival probability keeps the
+  // estimate unbiased.
+  float adjoint_survival(const WalkVertex& v) {
+    const float radiance = region_->guides[bucket_].radiance;
+    if (!(radiance > 0)) return 1;
+    if (!(first_radiance_ > 0)) first_radiance_ = radiance;
+    adjoint_ = true;
+    const float expected = v.beta.max_component() * radiance / first_radiance_;
+    return expected < walk_.adjoint_roulette ? std::max(0.0f, expected / walk_.adjoint_roulette) : 1;
   }
 
   // u_lobe chooses the technique and, rescaled, the BSDF's lobe.
@@ -150,6 +198,14 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     float found_before[3];  // the path's radiance when it left the vertex
     float beta_after[3];    // its weight after the vertex's scattering
   };
+  // What the path had gathered when it reached a vertex, and its weight
+  // there: all it gathers from the vertex on, over that weight, is a
+  // sample of the radiance the vertex sends back.
+  struct RadianceRecord {
+    DirectionalGuide* guide;
+    float before[3];
+    float beta[3];
+  };
   GuidingTree& tree_;
   const GuidedWalk& walk_;
   GuidingRegion* region_ = nullptr;
@@ -160,6 +216,11 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   // little, and a fixed array keeps the walk free of allocation.
   std::array<Record, 64> records_;
   size_t pending_ = 0;
+  std::array<RadianceRecord, 64> radiance_records_;
+  size_t radiance_pending_ = 0;
+  Color arrived_with_;        // L as the walk reached the current vertex
+  float first_radiance_ = 0;  // the learnt radiance at the first vertex that had one
+  bool adjoint_ = false;      // whether adjoint-driven roulette judged the current vertex
 };
 
 // Radiance along `ray` by the guided walk; spectral as trace_path.

@@ -37,6 +37,11 @@ GuidingSettings read_guiding_settings(const Properties& props) {
                       "must be between 0 and 1024 (light paths per camera sample of a training pass; 0 learns "
                       "from the camera paths alone)");
   s.always_guide = props.get_bool("always_guide");
+  s.adjoint_roulette = props.get_float("adjoint_roulette");
+  if (!(s.adjoint_roulette >= 0 && s.adjoint_roulette <= 1))
+    throw props.error("adjoint_roulette",
+                      "must be in [0, 1]: the share of its first vertex's expected contribution below which a path "
+                      "meets roulette (0 leaves roulette to path's rule)");
   return s;
 }
 
@@ -59,7 +64,11 @@ std::vector<ParamSpec> guiding_params() {
            "1024); 0 learns them from the camera paths' records, as Müller et al. 2017"},
           {"always_guide", ParamType::Boolean, "false",
            "guide every pass; by default a training pass whose guided samples cost more (relative variance x "
-           "vertices) than pass 0's unguided ones ends guiding, and later samples are unguided"}};
+           "vertices) than pass 0's unguided ones ends guiding, and later samples are unguided"},
+          {"adjoint_roulette", ParamType::Float, "0.5",
+           "after the training, roulette by expected contribution (Vorba and Krivanek 2016, without splitting): "
+           "a path whose weight times its region's learnt radiance falls below this share of its first "
+           "vertex's survives with the ratio; in [0, 1], 0 keeps path's roulette alone"}};
 }
 
 std::string guiding_pointless(const Scene& scene, int64_t max_depth) {

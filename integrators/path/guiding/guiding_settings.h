@@ -22,11 +22,15 @@ class Scene;
 //   light_paths            light paths traced per camera sample of a training pass, whose
 //                          records teach the directions; 0: camera paths' records teach them
 //   always_guide           keep guiding where the training passes judge it costs more than it saves
+//   adjoint_roulette       after the training, a path whose expected contribution (its weight times
+//                          the radiance its region was learnt to send) falls below this share of its
+//                          first vertex's meets roulette by it; 0: path's roulette alone
 struct GuidingSettings {
   int training_passes = 6;
   float bsdf_fraction = 0.5f;
   double light_paths = 1;
   bool always_guide = false;
+  float adjoint_roulette = 0.5f;
   GuidingRefinement refinement;
 };
 

@@ -58,6 +58,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
   struct Recorded {
     std::array<DirectionalDistribution, kNormalBuckets> distributions;
     std::array<uint64_t, kNormalBuckets> bucket_records;
+    std::array<float, kNormalBuckets> radiance;
     uint64_t records;
   };
   std::vector<Recorded> recorded;
@@ -67,6 +68,9 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
     for (int b = 0; b < kNormalBuckets; ++b) {
       out.distributions[b] = r.guides[b].recording.distribution();
       out.bucket_records[b] = r.guides[b].records.load();
+      const DirectionalGuide& g = r.guides[b];
+      const uint64_t n = g.radiance_records.load();
+      out.radiance[b] = n >= kMinRadianceRecords ? float(g.radiance_sum.value() / double(n)) : g.radiance;
     }
     out.records = r.records.load();
   }
@@ -129,6 +133,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
         bytes += more;
       }
       region.guides[b].recording = DirectionalRecorder(std::move(shape));
+      region.guides[b].radiance = r.radiance[b];
       if (r.bucket_records[b] >= settings.min_records) region.guides[b].sampling = std::move(d);
     }
   }

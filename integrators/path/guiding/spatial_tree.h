@@ -38,7 +38,21 @@ struct DirectionalGuide {
   DirectionalDistribution sampling;
   DirectionalRecorder recording;
   std::atomic<uint64_t> records{0};  // recorded this pass
+  // The radiance the region's surfaces send back along camera paths (all
+  // that a path gathered from a vertex on, over its weight there), learnt
+  // as a mean over the last pass that recorded at least
+  // kMinRadianceRecords of it; 0 while unknown. Adjoint-driven roulette
+  // weighs paths by it.
+  float radiance = 0;
+  FixedPointSum radiance_sum;  // this pass's
+  std::atomic<uint64_t> radiance_records{0};
+
+  void record_radiance(double L) {
+    radiance_sum.add(L);
+    radiance_records.fetch_add(1, std::memory_order_relaxed);
+  }
 };
+inline constexpr uint64_t kMinRadianceRecords = 16;
 
 // Surfaces facing apart see light from apart: a region keeps one guide for
 // the points whose normal (turned toward the path's side) lies nearest
@@ -73,8 +87,9 @@ class GuidingTree {
   GuidingRegion& region_at(Vec3 p);
   // From the records of a pass of `pass_spp` samples per pixel: regions
   // holding many records are halved (both halves taking the records'
-  // distribution), the records become every region's sampling
-  // distribution, and each recorder is reshaped for the next pass.
+  // distribution and radiance), the records become every region's sampling
+  // distribution and radiance, and each recorder is reshaped for the next
+  // pass.
   void refine(const GuidingRefinement& settings, uint64_t pass_spp);
 
   size_t regions() const { return regions_.size(); }

@@ -8,7 +8,8 @@
 // with the runs' degrees of freedom. Guiding is kept on (always_guide)
 // where the training passes would judge it does not pay, and wherever a
 // guide learnt anything (min_records 0), so that every sample after them
-// is guided at every vertex it could be.
+// is guided at every vertex it could be, and meets adjoint-driven
+// roulette (the default) wherever its region learnt a radiance.
 
 #include <gtest/gtest.h>
 

@@ -153,6 +153,37 @@ TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
       << estimate.mean << " +- " << estimate.standard_error;
 }
 
+// The same sphere after two training passes, so that 13 of each pixel's
+// 16 samples meet adjoint-driven roulette: every region learnt about 2
+// (its emission and what it reflects), so a path's expected contribution
+// is its weight w, and below the threshold it survives with probability
+// w over the threshold (after two bounces w is about 0.25: 0.5 with the
+// default 0.5, 0.25 with 1) and weighs that much more. Student's t at
+// 0.1%, each.
+TEST(GuidedPath, AdjointRouletteKeepsTheClosedSpheresLeOverOneMinusAlbedo) {
+  for (const char* threshold : {"0.5", "1"}) {
+    const std::string xml =
+        std::string(
+            "<scene version='3.0.0'><integrator type='guided_path'><float name='spatial_threshold' "
+            "value='50'/><integer name='training_passes' value='2'/><float name='adjoint_roulette' value='") +
+        threshold +
+        "'/><boolean name='always_guide' value='true'/></integrator><sensor type='perspective'><float name='fov' "
+        "value='70'/><sampler type='independent'/>"
+        "<transform name='to_world'><lookat origin='0.1, 0.2, 0' target='1, 0.3, 0.2'/></transform>"
+        "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/>"
+        "<rfilter type='box'/></film></sensor>"
+        "<shape type='sphere'><boolean name='flip_normals' value='true'/>"
+        "<bsdf type='diffuse'><rgb name='reflectance' value='0.5'/></bsdf>"
+        "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>";
+    const auto scene = test::scene_from_xml(xml);
+    constexpr int kRuns = 16;
+    const auto estimate = test::estimate_regions(scene, test::grid_regions(16, 16, 1), 16, kRuns, 40)[0];
+    const double t = (estimate.mean - 2) / estimate.standard_error;
+    EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kRuns - 1))
+        << "adjoint_roulette " << threshold << ": " << estimate.mean << " +- " << estimate.standard_error;
+  }
+}
+
 // One-sample MIS with the balance heuristic: technique i (the BSDF with
 // probability a, the learned distribution otherwise) weighs its sample by
 // w_i = c_i p_i / (sum_j c_j p_j) and divides by c_i p_i; both come to f
@@ -217,6 +248,10 @@ TEST(GuidedPath, BadParametersNameThemselves) {
        "'light_paths' of integrator 'guided_path': must be between 0 and 1024 (light paths per camera sample"},
       {"<float name='light_paths' value='2000'/>",
        "'light_paths' of integrator 'guided_path': must be between 0 and 1024"},
+      {"<float name='adjoint_roulette' value='-0.1'/>",
+       "'adjoint_roulette' of integrator 'guided_path': must be in [0, 1]: the share of its first vertex's"},
+      {"<float name='adjoint_roulette' value='1.5'/>",
+       "'adjoint_roulette' of integrator 'guided_path': must be in [0, 1]"},
   };
   for (const auto& c : cases) {
     const std::string error = test::load_error(with_parameter(c.declaration), "guided.xml");

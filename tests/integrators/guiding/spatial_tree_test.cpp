@@ -1,6 +1,6 @@
 // The guiding tree over space: regions found by position, halved where
 // their records exceed the threshold, both halves taking the records'
-// distribution, and the memory cap holding refinement back.
+// distribution and radiance, and the memory cap holding refinement back.
 
 #include "integrators/path/guiding/spatial_tree.h"
 
@@ -91,6 +91,34 @@ TEST(GuidingTree, GuidesLearntFromFewRecordsStayEmpty) {
   record(enough, {0.2f, 0.5f, 0.5f}, 119);
   enough.refine(settings, 1);
   EXPECT_TRUE(enough.region_at({0.2f, 0.5f, 0.5f}).guides[0].sampling.empty());
+}
+
+// The radiance a guide learns is the mean of its pass's records, from
+// kMinRadianceRecords of them on; with fewer it keeps what it knew, and a
+// halved region's halves both keep the whole's.
+TEST(GuidingTree, LearnsEachGuidesMeanRadiance) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 100;
+  EXPECT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[2].radiance, 0);  // unknown
+  DirectionalGuide& guide = tree.region_at({0.2f, 0.5f, 0.5f}).guides[2];
+  for (int i = 0; i < 16; ++i) guide.record_radiance(i % 2 ? 3.0 : 0.0);  // mean 1.5
+  record(tree, {0.2f, 0.5f, 0.5f}, 150);
+  tree.refine(settings, 1);
+  ASSERT_EQ(tree.regions(), 2u);
+  EXPECT_FLOAT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[2].radiance, 1.5f);
+  EXPECT_FLOAT_EQ(tree.region_at({0.8f, 0.5f, 0.5f}).guides[2].radiance, 1.5f);
+  EXPECT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[0].radiance, 0);  // its own records were directions only
+
+  // 15 records are too few to replace it; 16 of 4 are not.
+  DirectionalGuide& left = tree.region_at({0.2f, 0.5f, 0.5f}).guides[2];
+  for (int i = 0; i < 15; ++i) left.record_radiance(10);
+  tree.refine(settings, 1);
+  EXPECT_FLOAT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[2].radiance, 1.5f);
+  DirectionalGuide& again = tree.region_at({0.2f, 0.5f, 0.5f}).guides[2];
+  for (int i = 0; i < 16; ++i) again.record_radiance(4);
+  tree.refine(settings, 1);
+  EXPECT_FLOAT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[2].radiance, 4.0f);
 }
 
 TEST(GuidingTree, PointsOutsideTheBoundsFallInTheNearestRegion) {
