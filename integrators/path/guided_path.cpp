@@ -186,6 +186,7 @@ bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>
   const bool guiding = unpaid_after_ < 0;
   walk_.guide = guiding && built_ > 0;
   walk_.record = guiding && range.pass < training_passes_ && whole_pass;
+  walk_.after_training = range.pass >= training_passes_;
   if (walk_.record) return start_recording(range.pass, stop);
   return true;
 }
@@ -199,6 +200,7 @@ bool GuidedEstimator::start_recording(uint32_t pass, const std::atomic<bool>* st
 bool GuidedEstimator::train_alone(uint32_t pass, const std::atomic<bool>* stop) {
   walk_.guide = built_ > 0;
   walk_.record = true;
+  walk_.after_training = false;
   const Film& film = *scene_.sensor().film();
   const uint64_t first = (uint64_t(1) << pass) - 1, count = uint64_t(1) << pass;
   ++passes_alone_;

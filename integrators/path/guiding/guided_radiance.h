@@ -23,6 +23,11 @@ struct GuidedWalk {
   bool camera_directions = true;
   // GuidingSettings::adjoint_roulette; 0 leaves roulette to path's rule.
   float adjoint_roulette = 0;
+  // Whether the samples walked are past the training passes: only they
+  // meet adjoint-driven roulette, whether or not this render records the
+  // pass (a range of a training pass's samples does not), so that a
+  // sample is walked alike in every render that takes it.
+  bool after_training = false;
 };
 
 // Whether a vertex of these lobes is guided: not where any lobe is a delta
@@ -77,7 +82,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
                                                 {arrived_with_.r, arrived_with_.g, arrived_with_.b},
                                                 {v.beta.r, v.beta.g, v.beta.b}};
     const float survival =
-        region_ && walk_.guide && !walk_.record && walk_.adjoint_roulette > 0 ? adjoint_survival(v) : 1;
+        region_ && walk_.guide && walk_.after_training && walk_.adjoint_roulette > 0 ? adjoint_survival(v) : 1;
     if (survival < 1 && !(this->sampler().next_1d() < survival)) return std::nullopt;
     auto bs = guide_ ? sample_mixture(v, u_lobe, u) : v.bsdf.sample(v.wo, u_lobe, u);
     if (bs && survival < 1) bs->f = bs->f * (1 / survival);
@@ -113,25 +118,11 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   void finish() {
     for (size_t i = 0; i < radiance_pending_; ++i) {
       const RadianceRecord& r = radiance_records_[i];
-      double sum = 0;
-      int channels = 0;
-      for (int c = 0; c < 3; ++c)
-        if (r.beta[c] > 0) {
-          sum += std::max(0.0f, this->L[c] - r.before[c]) / double(r.beta[c]);
-          ++channels;
-        }
-      if (channels) r.guide->record_radiance(sum / channels);
+      if (const auto found = found_beyond(r.before, r.beta)) r.guide->record_radiance(*found);
     }
     for (size_t i = 0; i < pending_; ++i) {
       const Record& r = records_[i];
-      double sum = 0;
-      int channels = 0;
-      for (int c = 0; c < 3; ++c)
-        if (r.beta_after[c] > 0) {
-          sum += std::max(0.0f, this->L[c] - r.found_before[c]) / double(r.beta_after[c]);
-          ++channels;
-        }
-      r.region->record(r.bucket, {r.x, r.y}, channels ? sum / channels / double(r.pdf) : 0);
+      r.region->record(r.bucket, {r.x, r.y}, found_beyond(r.found_before, r.beta_after).value_or(0) / double(r.pdf));
     }
   }
 
@@ -140,6 +131,21 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
  private:
   float pdf(Vec3 wi, float bsdf_pdf) const override {
     return mixture_pdf(walk_.bsdf_fraction, bsdf_pdf, guide_->pdf(direction_to_square(wi)));
+  }
+
+  // What the finished path gathered after it had gathered `before`, over
+  // its weight `beta` then, averaged over the channels that weight is not
+  // zero in; nothing where it is zero in all.
+  std::optional<double> found_beyond(const float before[3], const float beta[3]) const {
+    double sum = 0;
+    int channels = 0;
+    for (int c = 0; c < 3; ++c)
+      if (beta[c] > 0) {
+        sum += std::max(0.0f, this->L[c] - before[c]) / double(beta[c]);
+        ++channels;
+      }
+    if (channels == 0) return std::nullopt;
+    return sum / channels;
   }
 
   // Adjoint-driven roulette (Vorba and Křivánek 2016), without its

@@ -87,7 +87,8 @@ TEST(GuidedPath, IsPathWhereItHasNotLearnt) {
 // squared difference over 64 x 64 x 3 values). With fixed seeds the ratio
 // guided / path was 0.42 (seeds 1, 2) and 0.50 (3, 4); with a guide learnt
 // from camera paths alone it was 1.26, with roulette on the mixture's
-// weight 1.09.
+// weight 1.09. Adjoint-driven roulette is off, so that path's roulette
+// judges every guided vertex here.
 TEST(GuidedPath, HalvesThePathTracersVarianceWhereLightComesThroughAGap) {
   const auto scene = load_scene(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box-baffle.xml", {{"res", "64"}});
   const auto variance = [&](const std::string& integrator) {
@@ -96,7 +97,7 @@ TEST(GuidedPath, HalvesThePathTracersVarianceWhereLightComesThroughAGap) {
     for (size_t i = 0; i < a.size(); ++i) sum += double(a[i] - b[i]) * double(a[i] - b[i]);
     return sum / double(a.size()) / 2;
   };
-  const double path = variance("path"), guided = variance("guided_path");
+  const double path = variance("path"), guided = variance("guided_path:adjoint_roulette=0");
   EXPECT_LT(guided, 0.7 * path) << "guided " << guided << ", path " << path;
 }
 
@@ -131,12 +132,15 @@ TEST(GuidedPath, StopsGuidingWhereItDoesNotPay) {
 }
 
 // Inside a closed sphere emitting 1 and reflecting 0.5 every ray sees
-// 1 / (1 - 0.5) = 2, however the directions are drawn. Independent runs
-// give the error (a pass's samples share the distribution they learnt);
-// Student's t at 0.1%.
-TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
+// 1 / (1 - 0.5) = 2, however the directions are drawn. Its mean over 16
+// independent runs (a pass's samples share the distribution they
+// learnt, so runs give the error) of 16 spp at 16x16, by guided_path with
+// `parameters` beside a spatial_threshold of 50 and always_guide.
+constexpr int kSphereRuns = 16;
+test::RegionEstimate closed_sphere(const std::string& parameters) {
   const std::string xml =
-      "<scene version='3.0.0'><integrator type='guided_path'><float name='spatial_threshold' value='50'/>"
+      "<scene version='3.0.0'><integrator type='guided_path'><float name='spatial_threshold' value='50'/>" +
+      parameters +
       "<boolean name='always_guide' value='true'/></integrator><sensor type='perspective'><float name='fov' "
       "value='70'/><sampler type='independent'/>"
       "<transform name='to_world'><lookat origin='0.1, 0.2, 0' target='1, 0.3, 0.2'/></transform>"
@@ -145,11 +149,14 @@ TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
       "<shape type='sphere'><boolean name='flip_normals' value='true'/>"
       "<bsdf type='diffuse'><rgb name='reflectance' value='0.5'/></bsdf>"
       "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>";
-  const auto scene = test::scene_from_xml(xml);
-  constexpr int kRuns = 16;
-  const auto estimate = test::estimate_regions(scene, test::grid_regions(16, 16, 1), 16, kRuns, 40)[0];
+  return test::estimate_regions(test::scene_from_xml(xml), test::grid_regions(16, 16, 1), 16, kSphereRuns, 40)[0];
+}
+
+// Student's t at 0.1%.
+TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
+  const auto estimate = closed_sphere("");
   const double t = (estimate.mean - 2) / estimate.standard_error;
-  EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kRuns - 1))
+  EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kSphereRuns - 1))
       << estimate.mean << " +- " << estimate.standard_error;
 }
 
@@ -162,24 +169,11 @@ TEST(GuidedPath, ClosedEmittingSphereShowsLeOverOneMinusAlbedo) {
 // 0.1%, each.
 TEST(GuidedPath, AdjointRouletteKeepsTheClosedSpheresLeOverOneMinusAlbedo) {
   for (const char* threshold : {"0.5", "1"}) {
-    const std::string xml =
-        std::string(
-            "<scene version='3.0.0'><integrator type='guided_path'><float name='spatial_threshold' "
-            "value='50'/><integer name='training_passes' value='2'/><float name='adjoint_roulette' value='") +
-        threshold +
-        "'/><boolean name='always_guide' value='true'/></integrator><sensor type='perspective'><float name='fov' "
-        "value='70'/><sampler type='independent'/>"
-        "<transform name='to_world'><lookat origin='0.1, 0.2, 0' target='1, 0.3, 0.2'/></transform>"
-        "<film type='hdrfilm'><integer name='width' value='16'/><integer name='height' value='16'/>"
-        "<rfilter type='box'/></film></sensor>"
-        "<shape type='sphere'><boolean name='flip_normals' value='true'/>"
-        "<bsdf type='diffuse'><rgb name='reflectance' value='0.5'/></bsdf>"
-        "<emitter type='area'><rgb name='radiance' value='1'/></emitter></shape></scene>";
-    const auto scene = test::scene_from_xml(xml);
-    constexpr int kRuns = 16;
-    const auto estimate = test::estimate_regions(scene, test::grid_regions(16, 16, 1), 16, kRuns, 40)[0];
+    const auto estimate = closed_sphere(std::string("<integer name='training_passes' value='2'/><float "
+                                                    "name='adjoint_roulette' value='") +
+                                        threshold + "'/>");
     const double t = (estimate.mean - 2) / estimate.standard_error;
-    EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kRuns - 1))
+    EXPECT_LT(std::abs(t), test::two_sided_t_critical(0.001, kSphereRuns - 1))
         << "adjoint_roulette " << threshold << ": " << estimate.mean << " +- " << estimate.standard_error;
   }
 }
