@@ -20,9 +20,10 @@ import os
 import sys
 from pathlib import Path
 
+import convergence
 from caustica_inprocess import runner
 from reference import make_reference
-from suite_config import RUN_SEED_BASE, spp_ladder
+from suite_config import spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENE = "many-lights"
@@ -35,7 +36,7 @@ def run_selection(caustica, scene_path, reference, selection, ladder, res, rende
     renders_dir.mkdir(parents=True, exist_ok=True)
     for i, spp in enumerate(ladder):
         image = renders_dir / f"path-{selection}-{spp:06d}spp.exr"
-        metadata = caustica.render(scene_path, image, integrator="path", spp=spp, seed=RUN_SEED_BASE + i, res=res,
+        metadata = caustica.render(scene_path, image, integrator="path", spp=spp, seed=convergence.ladder_seed(i), res=res,
                                    options=["--light-selection", selection])
         metrics = caustica.compare(image, reference)
         rows.append({"selection": selection, "spp": spp, "seconds": float(metadata["seconds"]),

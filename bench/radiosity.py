@@ -30,7 +30,7 @@ import convergence
 from caustica_inprocess import runner
 from plots import plot_convergence
 from reference import make_reference
-from suite_config import RUN_SEED_BASE, spp_ladder
+from suite_config import spp_ladder
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ["cornell-box", "cornell-box-baffle"]
@@ -46,7 +46,7 @@ def radiosity_runs(caustica, scene, scene_path, reference, patches, res, renders
         for i, patch in enumerate(patches):
             image = renders_dir / f"{label.replace(' ', '-')}-{patch:g}.exr"
             metadata = caustica.render(scene_path, image, integrator=f"radiosity:patch_size={patch},{params}",
-                                       spp=RADIOSITY_SPP, seed=RUN_SEED_BASE + i, res=res)
+                                       spp=RADIOSITY_SPP, seed=convergence.ladder_seed(i), res=res)
             metrics = caustica.compare(image, reference)
             row = {"scene": scene, "integrator": label, "spp": RADIOSITY_SPP, "seconds": float(metadata["seconds"]),
                    "samples": int(metadata["samples"]), "rays": int(metadata["rays"]), "threads": caustica.threads}
