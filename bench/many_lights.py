@@ -36,8 +36,8 @@ def run_selection(caustica, scene_path, reference, selection, ladder, res, rende
     renders_dir.mkdir(parents=True, exist_ok=True)
     for i, spp in enumerate(ladder):
         image = renders_dir / f"path-{selection}-{spp:06d}spp.exr"
-        metadata = caustica.render(scene_path, image, integrator="path", spp=spp, seed=convergence.ladder_seed(i), res=res,
-                                   options=["--light-selection", selection])
+        metadata = caustica.render(scene_path, image, integrator="path", spp=spp, seed=convergence.ladder_seed(i),
+                                   res=res, options=["--light-selection", selection])
         metrics = caustica.compare(image, reference)
         rows.append({"selection": selection, "spp": spp, "seconds": float(metadata["seconds"]),
                      "rel_mse": float(metrics["rel_mse"])})

@@ -64,9 +64,9 @@ class RetimeLongest(unittest.TestCase):
         stub = ClockStub({"path": [4.0, 6.0], "guided_path": [7.0, 3.5]})
         convergence.retime_longest(stub, "box", "box.xml", rows, [1, 2], 8, Path("unused"), 3)
         # The stub's clock readings, not a measurement: which of them each row keeps.
-        seconds = {(r["integrator"], r["spp"]): r["seconds"] for r in rows}
-        self.assertEqual(seconds, {("path", 1): 5.0, ("path", 2): 4.0, ("guided_path", 1): 5.0,
-                                   ("guided_path", 2): 3.5})
+        kept_readings = {(r["integrator"], r["spp"]): r["seconds"] for r in rows}
+        self.assertEqual(kept_readings, {("path", 1): 5.0, ("path", 2): 4.0, ("guided_path", 1): 5.0,
+                                         ("guided_path", 2): 3.5})
         # Taking turns, each with the longest run's own seed.
         seed = convergence.ladder_seed(1)
         self.assertEqual(stub.calls, [("path", 2, seed), ("guided_path", 2, seed)] * 2)

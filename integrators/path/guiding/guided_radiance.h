@@ -63,7 +63,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     region_ = nullptr;
     guide_ = nullptr;
     adjoint_ = false;
-    arrived_with_ = this->L;
+    if (walk_.record) arrived_with_ = this->L;
     if ((walk_.guide || walk_.record) && guidable(v.bsdf.lobes())) {
       region_ = &tree_.region_at(v.si.p);
       bucket_ = normal_bucket(dot(v.si.ng, v.wo) < 0 ? -v.si.ng : v.si.ng);
@@ -224,7 +224,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   size_t pending_ = 0;
   std::array<RadianceRecord, 64> radiance_records_;
   size_t radiance_pending_ = 0;
-  Color arrived_with_;        // L as the walk reached the current vertex
+  Color arrived_with_;        // L as the walk reached the current vertex, where it records
   float first_radiance_ = 0;  // the learnt radiance at the first vertex that had one
   bool adjoint_ = false;      // whether adjoint-driven roulette judged the current vertex
 };
