@@ -32,8 +32,9 @@
 // Guiding costs time at every vertex, and guided paths stay longer in the
 // scene, so it pays only where it cuts the variance further than that:
 // from pass 2 on, each training pass's samples are weighed against pass
-// 0's, unguided (GuidingPayoff), and where the guided ones cost more per
-// unit of error, guiding stops and every later sample is path's. The
+// 0's, unguided (GuidingPayoff), less the emission their camera rays saw
+// directly, and where the guided ones cost more per unit of error, guiding
+// stops and every later sample is path's. The
 // decision uses earlier samples only, so each later sample stays unbiased.
 //
 // After the training, roulette is adjoint-driven where a path's region
@@ -223,9 +224,12 @@ bool GuidedEstimator::record_light_paths_of(uint32_t pass, const std::atomic<boo
 
 void GuidedEstimator::sample(Vec2i pixel, const Ray& ray, Sampler& sampler, std::span<float> out) const {
   SampleWavelengths w(scene_, sampler);
-  WalkCost cost;
-  const Color L = w.to_rgb(trace_guided_path(scene_, ray, sampler, path_, *tree_, walk_, w.get(), cost));
-  if (walk_.record) payoff_->add(pixel, L, cost);
+  const GuidedPathSample s = trace_guided_path(scene_, ray, sampler, path_, *tree_, walk_, w.get());
+  const Color L = w.to_rgb(s.L);
+  // What the camera sees directly, guiding cannot change: left in, a pixel
+  // on an emitter's edge whose few guided samples all missed it would read
+  // pass 0's hit as unguided variance and keep guiding going.
+  if (walk_.record) payoff_->add(pixel, L - w.to_rgb(s.seen), s.cost);
   out[0] = L.r;
   out[1] = L.g;
   out[2] = L.b;

@@ -21,10 +21,19 @@ class PathRadiance {
       : scene_(scene), sampler_(sampler), settings_(settings), caustics_(caustics), wavelengths_(wavelengths) {}
 
   WalkAction at_vertex(const WalkVertex& v) {
+    gather_emission(v);
+    return estimate_direct_light(v);
+  }
+
+  // at_vertex's two halves: the emission the walk meets at the vertex, and
+  // next-event estimation from it.
+  void gather_emission(const WalkVertex& v) {
     if (shows_emission(v.segments))
       emission_at_surface(scene_, v.si, v.wo, v.arrival, {}, [&](const Emitter& e, Color Le, float w) {
         L += v.beta * emission_for(e, Le, wavelengths_) * w;
       });
+  }
+  WalkAction estimate_direct_light(const WalkVertex& v) {
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();

@@ -40,28 +40,43 @@ Vec3 square_to_direction(Vec2 p) {
 }
 
 DirectionalDistribution::DirectionalDistribution(QuadtreeShape shape, std::vector<std::array<double, 4>> energy)
-    : shape_(std::move(shape)), energy_(std::move(energy)) {}
-
-double DirectionalDistribution::total() const {
-  const auto& e = energy_[0];
-  return e[0] + e[1] + e[2] + e[3];
+    : shape_(std::move(shape)), energy_(std::move(energy)), steps_(shape_.nodes()) {
+  const auto& root = energy_[0];
+  total_ = root[0] + root[1] + root[2] + root[3];
+  for (size_t n = 0; n < steps_.size(); ++n) {
+    const auto& e = energy_[n];
+    const double sum = e[0] + e[1] + e[2] + e[3];
+    Step& step = steps_[n];
+    step.children = shape_.children[n];
+    if (!(sum > 0)) {
+      step.density = {};
+      step.lower_x = step.lower_y[0] = step.lower_y[1] = 0.5f;
+      continue;
+    }
+    for (int q = 0; q < 4; ++q) step.density[q] = float(4 * e[q] / sum);
+    step.lower_x = float((e[0] + e[2]) / sum);
+    for (int qx = 0; qx < 2; ++qx) {
+      const double column = e[qx] + e[qx + 2];
+      step.lower_y[qx] = column > 0 ? float(e[qx] / column) : 0.5f;
+    }
+  }
 }
 
 DirectionalDistribution::Sample DirectionalDistribution::sample(Vec2 u_in) const {
   double u = u_in.x, v = u_in.y;
-  if (empty()) return {u_in, 1};
-  double x0 = 0, y0 = 0, size = 1, pdf = 1;
+  if (empty()) return {u_in, 1, {0, 0}, 1};
+  double x0 = 0, y0 = 0, size = 1;
+  float pdf = 1;
   for (uint32_t node = 0;;) {
-    const auto& e = energy_[node];
-    const double sum = e[0] + e[1] + e[2] + e[3];
-    const int qx = choose_half(u, (e[0] + e[2]) / sum);
-    const int qy = choose_half(v, e[qx] / (e[qx] + e[qx + 2]));
+    const Step& step = steps_[node];
+    const int qx = choose_half(u, step.lower_x);
+    const int qy = choose_half(v, step.lower_y[qx]);
     const int q = qx + 2 * qy;
-    pdf *= 4 * e[q] / sum;
+    pdf *= step.density[q];
     size *= 0.5;
     x0 += qx * size;
     y0 += qy * size;
-    node = shape_.children[node][q];
+    node = step.children[q];
     if (node == 0) break;
   }
   // The leaf's corners are multiples of a power of two that floats hold
@@ -69,29 +84,29 @@ DirectionalDistribution::Sample DirectionalDistribution::sample(Vec2 u_in) const
   const auto inside = [size](double lo, double t) {
     return std::min(float(lo + t * size), std::nextafter(float(lo + size), 0.0f));
   };
-  return {{inside(x0, u), inside(y0, v)}, float(pdf)};
+  return {{inside(x0, u), inside(y0, v)}, pdf, {float(x0), float(y0)}, float(size)};
 }
 
 float DirectionalDistribution::pdf(Vec2 p) const {
   if (empty()) return 1;
-  double x = p.x, y = p.y, pdf = 1;
+  float x = p.x, y = p.y, pdf = 1;
   for (uint32_t node = 0;;) {
-    const auto& e = energy_[node];
-    const int qx = x >= 0.5 ? 1 : 0, qy = y >= 0.5 ? 1 : 0;
+    const Step& step = steps_[node];
+    const int qx = x >= 0.5f ? 1 : 0, qy = y >= 0.5f ? 1 : 0;
     const int q = qx + 2 * qy;
-    pdf *= 4 * e[q] / (e[0] + e[1] + e[2] + e[3]);
+    pdf *= step.density[q];
     if (!(pdf > 0)) return 0;
-    x = 2 * x - qx;
-    y = 2 * y - qy;
-    node = shape_.children[node][q];
+    x = 2 * x - float(qx);
+    y = 2 * y - float(qy);
+    node = step.children[q];
     if (node == 0) break;
   }
-  return float(pdf);
+  return pdf;
 }
 
 size_t DirectionalDistribution::bytes() const {
   return sizeof(DirectionalDistribution) +
-         shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>));
+         shape_.nodes() * (sizeof(std::array<uint32_t, 4>) + sizeof(std::array<double, 4>) + sizeof(Step));
 }
 
 DirectionalRecorder::DirectionalRecorder(QuadtreeShape shape)

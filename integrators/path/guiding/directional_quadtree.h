@@ -34,25 +34,49 @@ struct QuadtreeShape {
 class DirectionalDistribution {
  public:
   // Uniform: no energy recorded.
-  DirectionalDistribution() : energy_(1) {}
+  DirectionalDistribution() : energy_(1), steps_(1) {}
   DirectionalDistribution(QuadtreeShape shape, std::vector<std::array<double, 4>> energy);
 
   struct Sample {
     Vec2 p;
     float pdf;  // over the unit square
+    Vec2 leaf;  // the lower corner of the leaf quadrant p lies in
+    float leaf_size;
   };
   // From a uniform point of the square. Never returns a point of zero density.
   Sample sample(Vec2 u) const;
   float pdf(Vec2 p) const;
-  double total() const;
-  bool empty() const { return !(total() > 0); }
+  // pdf(p), read from s where p lies in s's leaf (the density there is s's,
+  // to the bit): a direction sampled and mapped back to the square mostly
+  // lands where it was drawn, and the descent is then spared.
+  float pdf_near(const Sample& s, Vec2 p) const {
+    const bool inside =
+        p.x >= s.leaf.x && p.x - s.leaf.x < s.leaf_size && p.y >= s.leaf.y && p.y - s.leaf.y < s.leaf_size;
+    return inside ? s.pdf : pdf(p);
+  }
+  double total() const { return total_; }
+  bool empty() const { return !(total_ > 0); }
   const QuadtreeShape& shape() const { return shape_; }
   const std::array<double, 4>& energy(uint32_t node) const { return energy_[node]; }
   size_t bytes() const;
 
  private:
+  // What a descent reads at a node, in one place: every path vertex reads
+  // a guide's density at least twice, and the sums above, spread over two
+  // arrays of doubles, cost it a division per level and twice the cache
+  // lines. Densities and probabilities are rounded to float from the
+  // doubles, so a zero stays zero and a quadrant of any energy keeps some.
+  struct Step {
+    std::array<uint32_t, 4> children;
+    std::array<float, 4> density;  // each quadrant's, relative to the node's: 4 e_q / sum
+    float lower_x;                 // the probability of the quadrants of x < 1/2
+    std::array<float, 2> lower_y;  // of y < 1/2, given the half of x chosen
+  };
+
   QuadtreeShape shape_;
   std::vector<std::array<double, 4>> energy_;  // per node and quadrant, the sum over what lies inside
+  std::vector<Step> steps_;                    // per node, from energy_
+  double total_ = 0;
 };
 
 // Records energy into the leaf quadrants of a quadtree of fixed shape,

@@ -6,25 +6,24 @@ namespace {
 namespace CAUSTICA_UNITY_ID {
 
 template <bool kMedia>
-Color walk(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
-           const GuidedWalk& walk, Wavelengths* wavelengths, const Medium* medium, WalkCost& cost) {
+GuidedPathSample walk(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
+                      const GuidedWalk& walk, Wavelengths* wavelengths, const Medium* medium) {
   GuidedRadiance<kMedia> radiance(scene, sampler, settings, wavelengths, tree, walk);
   random_walk(scene, ray, Color(1), TransportMode::Radiance, camera_walk_limits(settings), sampler, radiance, medium,
               wavelengths);
   radiance.finish();
-  cost = radiance.cost;
-  return radiance.L;
+  return {radiance.L, radiance.seen, radiance.cost};
 }
 
 }  // namespace CAUSTICA_UNITY_ID
 using namespace CAUSTICA_UNITY_ID;
 }  // namespace
 
-Color trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
-                        const GuidedWalk& guided, Wavelengths* wavelengths, WalkCost& cost) {
+GuidedPathSample trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
+                                   GuidingTree& tree, const GuidedWalk& guided, Wavelengths* wavelengths) {
   if (scene.features().medium_walk)
-    return walk<true>(scene, ray, sampler, settings, tree, guided, wavelengths, scene.sensor().medium(), cost);
-  return walk<false>(scene, ray, sampler, settings, tree, guided, wavelengths, nullptr, cost);
+    return walk<true>(scene, ray, sampler, settings, tree, guided, wavelengths, scene.sensor().medium());
+  return walk<false>(scene, ray, sampler, settings, tree, guided, wavelengths, nullptr);
 }
 
 }  // namespace caustica

@@ -73,7 +73,14 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     ++cost.vertices;
     if (guide_) ++cost.guided;
     this->density_ = guide_ ? this : nullptr;
-    return PathRadiance<kMedia>::at_vertex(v);
+    this->gather_emission(v);
+    if (v.segments == 1) seen = this->L;
+    return this->estimate_direct_light(v);
+  }
+
+  void escaped(const WalkEscape& e) {
+    PathRadiance<kMedia>::escaped(e);
+    if (e.segments == 1) seen = this->L;
   }
 
   std::optional<BsdfSample> sample_scattering(const WalkVertex& v, float u_lobe, Vec2 u) {
@@ -127,6 +134,9 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   }
 
   WalkCost cost;
+  // The emission the camera's ray met where it first landed: a function of
+  // the camera sample alone, the same whether or not the path is guided.
+  Color seen;
 
  private:
   float pdf(Vec3 wi, float bsdf_pdf) const override {
@@ -178,14 +188,15 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
       }
       return bs;
     }
-    // The guide's density is read back at wi rather than taken from its
-    // sample, so that a sample and a light sample in the same direction
-    // meet the same mixture (the map's rounding can move wi across a
-    // quadrant's edge).
-    const Vec3 wi = square_to_direction(guide_->sample(u).p);
+    // The guide's density is that at wi mapped back to the square, not
+    // the sample's own, so that a sample and a light sample in the same
+    // direction meet the same mixture (the map's rounding can move wi
+    // across a quadrant's edge).
+    const DirectionalDistribution::Sample drawn = guide_->sample(u);
+    const Vec3 wi = square_to_direction(drawn.p);
     const auto [f, bsdf_pdf] = v.bsdf.eval_and_pdf(v.wo, wi);
     bsdf_pdf_ = bsdf_pdf;
-    const float p = pdf(wi, bsdf_pdf);
+    const float p = mixture_pdf(walk_.bsdf_fraction, bsdf_pdf, guide_->pdf_near(drawn, direction_to_square(wi)));
     if (f.is_black() || !(p > 0)) return std::nullopt;
     const bool same_side = dot(wi, v.si.ng) * dot(v.wo, v.si.ng) > 0;
     const uint32_t lobes = v.bsdf.lobes() & (same_side ? kReflection : kTransmission);
@@ -229,9 +240,14 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   bool adjoint_ = false;      // whether adjoint-driven roulette judged the current vertex
 };
 
-// Radiance along `ray` by the guided walk; spectral as trace_path.
-// `cost` receives what the walk cost.
-Color trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings, GuidingTree& tree,
-                        const GuidedWalk& walk, Wavelengths* wavelengths, WalkCost& cost);
+// A guided walk's radiance (spectral as trace_path), the part of it that
+// the camera's ray saw directly (GuidedRadiance::seen), and its cost.
+struct GuidedPathSample {
+  Color L;
+  Color seen;
+  WalkCost cost;
+};
+GuidedPathSample trace_guided_path(const Scene& scene, Ray ray, Sampler& sampler, const PathSettings& settings,
+                                   GuidingTree& tree, const GuidedWalk& walk, Wavelengths* wavelengths);
 
 }  // namespace caustica

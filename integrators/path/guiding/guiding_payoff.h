@@ -47,7 +47,8 @@ class GuidingPayoff {
 
   // Before the samples of training pass `pass` (passes come in order).
   void begin_pass(uint32_t pass);
-  // One sample of the current pass and what its walk cost. Safe from many
+  // One sample of the current pass (the part of its radiance that guiding
+  // can change) and what its walk cost. Safe from many
   // threads as long as each pixel's samples come from one thread, in order:
   // only the tracked pixels keep anything, their cost included, so no two
   // threads write one place.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -87,6 +88,26 @@ TEST(DirectionalDistribution, SampleDensityEqualsDensityAtThePoint) {
     ASSERT_GT(s.pdf, 0);
     ASSERT_EQ(s.pdf, d.pdf(s.p)) << s.p.x << ", " << s.p.y;
   }
+}
+
+// Near its sample, within a leaf or beyond it, the density read from a
+// sample is the density at the point.
+TEST(DirectionalDistribution, DensityNearASampleIsTheDensityThere) {
+  const DirectionalDistribution d = lopsided(20000);
+  test::UniformSource u(6);
+  int beyond = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const auto s = d.sample(u.next_2d());
+    ASSERT_GE(s.p.x, s.leaf.x);
+    ASSERT_LT(s.p.x, s.leaf.x + s.leaf_size);
+    ASSERT_GE(s.p.y, s.leaf.y);
+    ASSERT_LT(s.p.y, s.leaf.y + s.leaf_size);
+    const float step = s.leaf_size * (u.next_1d() - 0.5f);
+    const Vec2 near{std::clamp(s.p.x + step, 0.0f, 0.99999f), std::clamp(s.p.y - step, 0.0f, 0.99999f)};
+    if (d.pdf(near) != s.pdf) ++beyond;
+    ASSERT_EQ(d.pdf_near(s, near), d.pdf(near)) << near.x << ", " << near.y;
+  }
+  EXPECT_GT(beyond, 1000);
 }
 
 TEST(DirectionalDistribution, EmptyIsUniform) {
