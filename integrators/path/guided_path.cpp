@@ -34,8 +34,8 @@
 // from pass 2 on, each training pass's samples are weighed against pass
 // 0's, unguided (GuidingPayoff), less the emission their camera rays saw
 // directly, and where the guided ones cost more per unit of error, guiding
-// stops and every later sample is path's. The
-// decision uses earlier samples only, so each later sample stays unbiased.
+// stops and every later sample is path's. The decision uses earlier
+// samples only, so each later sample stays unbiased.
 //
 // After the training, roulette is adjoint-driven where a path's region
 // has learnt the radiance it sends back (GuidedRadiance::adjoint_survival):
