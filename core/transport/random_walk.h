@@ -21,7 +21,12 @@
 // may provide
 //   Color roulette_weight(const WalkVertex&, const BsdfSample&)
 // the factor by which the sample changes the throughput Russian roulette
-// judges (else the sample's weight f |cos| / pdf). Visitors that handle media
+// judges (else the sample's weight f |cos| / pdf), and
+//   bool sampled_lights() const
+// whether it estimated direct light at the last vertex (else it always
+// does): where it did not, the emission the sampled direction meets is
+// that vertex's only estimate of it and weighs in full, as after a delta
+// lobe. Visitors that handle media
 // also provide
 //   WalkAction at_medium_vertex(const MediumVertex&)   the ray scattered in a medium
 //   WalkAction scattered_in_medium(const PhaseSample&) the phase function was sampled there
@@ -107,6 +112,11 @@ concept RouletteWeigher = requires(Visitor& v, const WalkVertex& wv, const BsdfS
   { v.roulette_weight(wv, bs) } -> std::same_as<Color>;
 };
 
+template <class Visitor>
+concept LightSampleSkipper = requires(const Visitor& v) {
+  { v.sampled_lights() } -> std::same_as<bool>;
+};
+
 template <bool kMedia, class Visitor>
 void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, const WalkLimits& limits,
                    Sampler& sampler, Visitor& visitor, const Medium* medium, Wavelengths* wavelengths) {
@@ -186,6 +196,8 @@ void walk_segments(const Scene& scene, Ray ray, Color beta, TransportMode mode, 
       throughput *= weight;
     if (mode == TransportMode::Radiance && bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
     arrival = arrival_from(*si, *bs);
+    if constexpr (LightSampleSkipper<Visitor>)
+      if (!visitor.sampled_lights()) arrival.delta = true;
     ray = si->spawn(bs->wi);
     if constexpr (kMedia) medium = medium_after(*si, medium, bs->wi);
 

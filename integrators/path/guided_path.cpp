@@ -42,6 +42,10 @@
 // camera paths of the training passes record it at every vertex they
 // could guide.
 //
+// Where a guide has learnt that its light samples reach no light (none of
+// 256 or more in a training pass added anything), its guided vertices
+// take none, and the emission their directions find counts in full.
+//
 // Records are summed in fixed point (FixedPointSum), and the trees are
 // rebuilt from them between passes in one thread, so the image is the same
 // for any thread count. A render of a range of samples, a replayed sample
@@ -138,6 +142,8 @@ class GuidedPathIntegrator final : public PixelIntegrator {
                 ? "; after the training, roulette by expected contribution (adjoint_roulette " +
                       std::to_string(guiding_.adjoint_roulette) + ")"
                 : std::string("; path's roulette")) +
+           (guiding_.skip_unseen_lights ? std::string("; no light samples where a guide learnt they reach no light")
+                                        : std::string()) +
            (guiding_.always_guide ? std::string("; guides every pass (always_guide)")
                                   : std::string("; guiding stops after a training pass whose guided samples cost more "
                                                 "per unit of error than pass 0's unguided ones"));
@@ -167,6 +173,7 @@ GuidedEstimator::GuidedEstimator(const GuidedPathIntegrator& integrator, const S
   walk_.bsdf_fraction = guiding_.bsdf_fraction;
   walk_.camera_directions = !(guiding_.light_paths > 0);
   walk_.adjoint_roulette = guiding_.adjoint_roulette;
+  walk_.skip_unseen_lights = guiding_.skip_unseen_lights;
 }
 
 bool GuidedEstimator::begin_pass(const PassRange& range, const std::atomic<bool>* stop) {

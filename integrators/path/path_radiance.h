@@ -33,6 +33,15 @@ class PathRadiance {
         L += v.beta * emission_for(e, Le, wavelengths_) * w;
       });
   }
+  // In place of estimate_direct_light where the walk takes no light
+  // sample: the same numbers drawn, so that later dimensions keep their
+  // meaning.
+  WalkAction skip_direct_light(const WalkVertex& v) {
+    if (v.last) return WalkAction::Stop;
+    sampler_.next_1d();
+    sampler_.next_2d();
+    return WalkAction::Continue;
+  }
   WalkAction estimate_direct_light(const WalkVertex& v) {
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();

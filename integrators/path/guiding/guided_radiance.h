@@ -23,6 +23,9 @@ struct GuidedWalk {
   bool camera_directions = true;
   // GuidingSettings::adjoint_roulette; 0 leaves roulette to path's rule.
   float adjoint_roulette = 0;
+  // GuidingSettings::skip_unseen_lights: no light sample at a guided
+  // vertex whose guide learnt that its light samples reach no light.
+  bool skip_unseen_lights = false;
   // Whether the samples walked are past the training passes: only they
   // meet adjoint-driven roulette, whether or not this render records the
   // pass (a range of a training pass's samples does not), so that a
@@ -75,8 +78,18 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     this->density_ = guide_ ? this : nullptr;
     this->gather_emission(v);
     if (v.segments == 1) seen = this->L;
-    return this->estimate_direct_light(v);
+    sampled_lights_ = !(guide_ && walk_.skip_unseen_lights && region_->guides[bucket_].lights_unseen);
+    if (!sampled_lights_) return this->skip_direct_light(v);
+    if (!region_ || !walk_.record || v.last) return this->estimate_direct_light(v);
+    const Color before = this->L;
+    const WalkAction action = this->estimate_direct_light(v);
+    region_->guides[bucket_].record_light_sample(!(this->L == before));
+    return action;
   }
+
+  // Where no light sample was taken, the emission the next direction meets
+  // counts in full (core/transport/random_walk.h).
+  bool sampled_lights() const { return sampled_lights_; }
 
   void escaped(const WalkEscape& e) {
     PathRadiance<kMedia>::escaped(e);
@@ -235,9 +248,10 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
   size_t pending_ = 0;
   std::array<RadianceRecord, 64> radiance_records_;
   size_t radiance_pending_ = 0;
-  Color arrived_with_;        // L as the walk reached the current vertex, where it records
-  float first_radiance_ = 0;  // the learnt radiance at the first vertex that had one
-  bool adjoint_ = false;      // whether adjoint-driven roulette judged the current vertex
+  Color arrived_with_;          // L as the walk reached the current vertex, where it records
+  float first_radiance_ = 0;    // the learnt radiance at the first vertex that had one
+  bool adjoint_ = false;        // whether adjoint-driven roulette judged the current vertex
+  bool sampled_lights_ = true;  // whether the current vertex took a light sample
 };
 
 // A guided walk's radiance (spectral as trace_path), the part of it that

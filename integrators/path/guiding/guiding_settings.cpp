@@ -42,6 +42,7 @@ GuidingSettings read_guiding_settings(const Properties& props) {
     throw props.error("adjoint_roulette",
                       "must be in [0, 1]: the share of its first vertex's expected contribution below which a path "
                       "meets roulette (0 leaves roulette to path's rule)");
+  s.skip_unseen_lights = props.get_bool("skip_unseen_lights");
   return s;
 }
 
@@ -68,7 +69,10 @@ std::vector<ParamSpec> guiding_params() {
           {"adjoint_roulette", ParamType::Float, "0.5",
            "after the training, roulette by expected contribution (Vorba and Krivanek 2016, without splitting): "
            "a path whose weight times its region's learnt radiance falls below this share of its first "
-           "vertex's survives with the ratio; in [0, 1], 0 keeps path's roulette alone"}};
+           "vertex's survives with the ratio; in [0, 1], 0 keeps path's roulette alone"},
+          {"skip_unseen_lights", ParamType::Boolean, "true",
+           "guided vertices take no light sample where their guide's light samples reached no light over a "
+           "training pass (at least 256 of them); emission their directions find there then counts in full"}};
 }
 
 std::string guiding_pointless(const Scene& scene, int64_t max_depth) {

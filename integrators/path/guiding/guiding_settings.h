@@ -25,12 +25,15 @@ class Scene;
 //   adjoint_roulette       after the training, a path whose expected contribution (its weight times
 //                          the radiance its region was learnt to send) falls below this share of its
 //                          first vertex's meets roulette by it; 0: path's roulette alone
+//   skip_unseen_lights     no light sample at guided vertices of guides whose light samples
+//                          reached no light over a whole pass
 struct GuidingSettings {
   int training_passes = 6;
   float bsdf_fraction = 0.5f;
   double light_paths = 1;
   bool always_guide = false;
   float adjoint_roulette = 0.5f;
+  bool skip_unseen_lights = true;
   GuidingRefinement refinement;
 };
 

@@ -59,6 +59,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
     std::array<DirectionalDistribution, kNormalBuckets> distributions;
     std::array<uint64_t, kNormalBuckets> bucket_records;
     std::array<float, kNormalBuckets> radiance;
+    std::array<bool, kNormalBuckets> lights_unseen;
     uint64_t records;
   };
   std::vector<Recorded> recorded;
@@ -71,6 +72,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
       const DirectionalGuide& g = r.guides[b];
       const uint64_t n = g.radiance_records.load();
       out.radiance[b] = n >= kMinRadianceRecords ? float(g.radiance_sum.value() / double(n)) : g.radiance;
+      out.lights_unseen[b] = g.light_samples.load() >= kMinLightSamples ? g.lit_samples.load() == 0 : g.lights_unseen;
     }
     out.records = r.records.load();
   }
@@ -134,6 +136,7 @@ void GuidingTree::refine(const GuidingRefinement& settings, uint64_t pass_spp) {
       }
       region.guides[b].recording = DirectionalRecorder(std::move(shape));
       region.guides[b].radiance = r.radiance[b];
+      region.guides[b].lights_unseen = r.lights_unseen[b];
       if (r.bucket_records[b] >= settings.min_records) region.guides[b].sampling = std::move(d);
     }
   }

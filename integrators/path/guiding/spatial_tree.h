@@ -51,8 +51,22 @@ struct DirectionalGuide {
     radiance_sum.add(L);
     radiance_records.fetch_add(1, std::memory_order_relaxed);
   }
+
+  // Whether light samples from the region's surfaces never reach a light
+  // (occluded, or behind the surface): learnt once a pass took
+  // kMinLightSamples of them and none added anything, and kept since
+  // (guided paths then take none there, so later passes take too few to
+  // judge again).
+  bool lights_unseen = false;
+  std::atomic<uint64_t> light_samples{0}, lit_samples{0};  // this pass's
+
+  void record_light_sample(bool lit) {
+    light_samples.fetch_add(1, std::memory_order_relaxed);
+    if (lit) lit_samples.fetch_add(1, std::memory_order_relaxed);
+  }
 };
 inline constexpr uint64_t kMinRadianceRecords = 16;
+inline constexpr uint64_t kMinLightSamples = 256;
 
 // Surfaces facing apart see light from apart: a region keeps one guide for
 // the points whose normal (turned toward the path's side) lies nearest
@@ -86,10 +100,10 @@ class GuidingTree {
 
   GuidingRegion& region_at(Vec3 p);
   // From the records of a pass of `pass_spp` samples per pixel: regions
-  // holding many records are halved (both halves taking the records'
-  // distribution and radiance), the records become every region's sampling
-  // distribution and radiance, and each recorder is reshaped for the next
-  // pass.
+  // holding many records are halved (both halves taking what the whole
+  // learnt), the records become every region's sampling distribution,
+  // radiance and whether its light samples reach a light, and each
+  // recorder is reshaped for the next pass.
   void refine(const GuidingRefinement& settings, uint64_t pass_spp);
 
   size_t regions() const { return regions_.size(); }

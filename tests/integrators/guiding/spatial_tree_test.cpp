@@ -121,6 +121,36 @@ TEST(GuidingTree, LearnsEachGuidesMeanRadiance) {
   EXPECT_FLOAT_EQ(tree.region_at({0.2f, 0.5f, 0.5f}).guides[2].radiance, 4.0f);
 }
 
+// A guide learns that its light samples reach no light from a pass of 256
+// or more that all added nothing; fewer leave what it knew, one lit
+// sample says they do, and both halves of a split region keep the
+// whole's.
+TEST(GuidingTree, LearnsWhereLightSamplesReachNoLight) {
+  GuidingTree tree(unit_box());
+  GuidingRefinement settings;
+  settings.spatial_threshold = 100;
+  GuidingRegion& region = tree.region_at({0.2f, 0.5f, 0.5f});
+  for (int i = 0; i < 256; ++i) region.guides[0].record_light_sample(false);
+  for (int i = 0; i < 300; ++i) region.guides[1].record_light_sample(i == 123);
+  for (int i = 0; i < 255; ++i) region.guides[2].record_light_sample(false);
+  record(tree, {0.2f, 0.5f, 0.5f}, 150);
+  tree.refine(settings, 1);
+  ASSERT_EQ(tree.regions(), 2u);
+  for (const Vec3 p : {Vec3{0.2f, 0.5f, 0.5f}, Vec3{0.8f, 0.5f, 0.5f}}) {
+    EXPECT_TRUE(tree.region_at(p).guides[0].lights_unseen);
+    EXPECT_FALSE(tree.region_at(p).guides[1].lights_unseen);
+    EXPECT_FALSE(tree.region_at(p).guides[2].lights_unseen);
+  }
+  // A pass without light samples keeps it; a lit one among 256 undoes it.
+  tree.refine(settings, 1);
+  GuidingRegion& left = tree.region_at({0.2f, 0.5f, 0.5f});
+  EXPECT_TRUE(left.guides[0].lights_unseen);
+  for (int i = 0; i < 256; ++i) left.guides[0].record_light_sample(i == 0);
+  tree.refine(settings, 1);
+  EXPECT_FALSE(tree.region_at({0.2f, 0.5f, 0.5f}).guides[0].lights_unseen);
+  EXPECT_TRUE(tree.region_at({0.8f, 0.5f, 0.5f}).guides[0].lights_unseen);
+}
+
 TEST(GuidingTree, PointsOutsideTheBoundsFallInTheNearestRegion) {
   GuidingTree tree(unit_box());
   GuidingRefinement settings;
