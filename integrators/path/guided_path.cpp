@@ -261,6 +261,10 @@ std::string GuidedEstimator::summary() const {
   else if (built_ > GuidingPayoff::kFirstJudged)
     s += ", pass " + std::to_string(built_ - 1) + ": " + figures;
   if (passes_alone_ > 0) s += ", " + std::to_string(passes_alone_) + " passes traced for learning alone";
+  const size_t unlit = tree_->guides_without_lights();
+  if (guiding_.skip_unseen_lights && unlit > 0 && unpaid_after_ < 0)
+    s += ", no light samples at the guided vertices of " + std::to_string(unlit) +
+         " guides whose light samples reached no light";
   return s;
 }
 

@@ -45,6 +45,13 @@ size_t GuidingTree::directional_nodes() const {
   return n;
 }
 
+size_t GuidingTree::guides_without_lights() const {
+  size_t n = 0;
+  for (const GuidingRegion& r : regions_)
+    for (const DirectionalGuide& g : r.guides) n += g.lights_unseen ? 1 : 0;
+  return n;
+}
+
 size_t GuidingTree::bytes() const {
   size_t b = nodes_.size() * sizeof(Node);
   for (const GuidingRegion& r : regions_) {

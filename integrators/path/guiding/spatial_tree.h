@@ -108,6 +108,8 @@ class GuidingTree {
 
   size_t regions() const { return regions_.size(); }
   size_t directional_nodes() const;
+  // The guides that have learnt that their light samples reach no light.
+  size_t guides_without_lights() const;
   size_t bytes() const;
   // Whether the byte cap held refinement back in the last refine().
   bool capped() const { return capped_; }

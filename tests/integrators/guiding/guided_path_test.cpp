@@ -127,6 +127,7 @@ TEST(GuidedPath, StopsGuidingWhereItDoesNotPay) {
   const std::string baffle = summary("cornell-box-baffle", "guided_path");
   EXPECT_THAT(baffle, Not(HasSubstr("stopped"))) << baffle;
   EXPECT_THAT(baffle, HasSubstr("pass 5: relative variance")) << baffle;
+  EXPECT_THAT(baffle, HasSubstr("guides whose light samples reached no light")) << baffle;
   EXPECT_THAT(summary("cornell-box", "guided_path:always_guide=true"), Not(HasSubstr("stopped")));
   // Once stopped, a sample is path's, bit for bit.
   const auto box = load("cornell-box");
