@@ -33,19 +33,14 @@ class PathRadiance {
         L += v.beta * emission_for(e, Le, wavelengths_) * w;
       });
   }
-  // In place of estimate_direct_light where the walk takes no light
-  // sample: the same numbers drawn, so that later dimensions keep their
-  // meaning.
-  WalkAction skip_direct_light(const WalkVertex& v) {
-    if (v.last) return WalkAction::Stop;
-    sampler_.next_1d();
-    sampler_.next_2d();
-    return WalkAction::Continue;
-  }
-  WalkAction estimate_direct_light(const WalkVertex& v) {
+  // Without `sample_lights` (where a guided walk has learnt that light
+  // samples reach no light) it takes none, but draws their numbers still,
+  // so that later dimensions keep their meaning.
+  WalkAction estimate_direct_light(const WalkVertex& v, bool sample_lights = true) {
     if (v.last) return WalkAction::Stop;
     const float u_select = sampler_.next_1d();
     const Vec2 u_light = sampler_.next_2d();
+    if (!sample_lights) return WalkAction::Continue;
     const bool non_delta = v.bsdf.lobes() & ~kDelta;
     if (non_delta) {
       if constexpr (kMedia)

@@ -79,8 +79,7 @@ class GuidedRadiance : public PathRadiance<kMedia>, private ScatterDensity {
     this->gather_emission(v);
     if (v.segments == 1) seen = this->L;
     sampled_lights_ = !(guide_ && walk_.skip_unseen_lights && region_->guides[bucket_].lights_unseen);
-    if (!sampled_lights_) return this->skip_direct_light(v);
-    if (!region_ || !walk_.record || v.last) return this->estimate_direct_light(v);
+    if (!sampled_lights_ || !region_ || !walk_.record || v.last) return this->estimate_direct_light(v, sampled_lights_);
     const Color before = this->L;
     const WalkAction action = this->estimate_direct_light(v);
     region_->guides[bucket_].record_light_sample(!(this->L == before));
